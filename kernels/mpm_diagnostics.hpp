@@ -1,0 +1,77 @@
+#ifndef MPM_DIAGNOSTICS_HPP
+#define MPM_DIAGNOSTICS_HPP
+
+#include <mpm_particle_views.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+//! Total kinetic energy sum 0.5 m_p |v_p|^2, J (per metre out of plane).
+template <class ExecSpace>
+double kineticEnergy( const ExecSpace& exec_space,
+                      const ParticleViews<ExecSpace>& pv )
+{
+    const auto v_p = pv.v_p;
+    const auto m_p = pv.m_p;
+    const auto status_p = pv.status_p;
+    double energy = 0.0;
+    Kokkos::parallel_reduce(
+        "mpm::kinetic_energy",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& sum ) {
+            if ( status_p( p ) == point_active )
+                sum +=
+                    0.5 * m_p( p ) *
+                    ( v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 ) );
+        },
+        Kokkos::Sum<double>( energy ) );
+    return energy;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Smallest index of an active point whose position, velocity,
+  stress or volume is not finite, or whose speed exceeds `speed_limit`;
+  -1 if there is none.
+*/
+template <class ExecSpace>
+int findUnstablePoint( const ExecSpace& exec_space,
+                       const ParticleViews<ExecSpace>& pv,
+                       const double speed_limit )
+{
+    namespace KE = Kokkos::Experimental;
+    const auto x_p = pv.x_p;
+    const auto v_p = pv.v_p;
+    const auto sigma_p = pv.sigma_p;
+    const auto vol_p = pv.vol_p;
+    const auto status_p = pv.status_p;
+    const int none = pv.size();
+    int first = none;
+    Kokkos::parallel_reduce(
+        "mpm::find_unstable_point",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, int& first_bad ) {
+            if ( status_p( p ) != point_active )
+                return;
+            // Any NaN or infinity makes the sum non-finite.
+            const double sum = x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) +
+                               sigma_p( p, 1 ) + sigma_p( p, 2 ) +
+                               sigma_p( p, 3 ) + vol_p( p );
+            const double speed2 =
+                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
+            const bool bad = !KE::isfinite( sum ) || !KE::isfinite( speed2 ) ||
+                             speed2 > speed_limit * speed_limit ||
+                             !( vol_p( p ) > 0.0 );
+            if ( bad && p < first_bad )
+                first_bad = p;
+        },
+        Kokkos::Min<int>( first ) );
+    return first >= none ? -1 : first;
+}
+
+} // namespace mpm
+
+#endif // MPM_DIAGNOSTICS_HPP

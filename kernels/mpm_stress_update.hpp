@@ -1,0 +1,68 @@
+#ifndef MPM_STRESS_UPDATE_HPP
+#define MPM_STRESS_UPDATE_HPP
+
+#include <mpm_particle_views.hpp>
+#include <physics/mpm_kinematics.hpp>
+#include <physics/mpm_linear_elastic.hpp>
+#include <physics/mpm_material_params.hpp>
+#include <physics/mpm_mohr_coulomb.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Stress update of every point from its velocity gradient: Jaumann
+  rotation, then the point's constitutive model on the strain increment
+  sym(L) dt; accumulates strain and updates the volume by det(I + L dt).
+*/
+template <class ExecSpace>
+void stressUpdate( const ExecSpace& exec_space,
+                   const ParticleViews<ExecSpace>& pv,
+                   const physics::MaterialTable& materials, const double dt )
+{
+    const physics::Kinematics kinematics{ dt };
+    const physics::LinearElastic linear_elastic{};
+    const physics::MohrCoulomb mohr_coulomb{};
+    const auto grad_v_p = pv.grad_v_p;
+    const auto sigma_p = pv.sigma_p;
+    const auto eps_p = pv.eps_p;
+    const auto eps_p_bar_p = pv.eps_p_bar_p;
+    const auto vol_p = pv.vol_p;
+    const auto material_p = pv.material_p;
+    const auto status_p = pv.status_p;
+
+    Kokkos::parallel_for(
+        "mpm::stress_update",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p ) {
+            if ( status_p( p ) != point_active )
+                return;
+            const double L[2][2] = {
+                { grad_v_p( p, 0, 0 ), grad_v_p( p, 0, 1 ) },
+                { grad_v_p( p, 1, 0 ), grad_v_p( p, 1, 1 ) } };
+            double de[4];
+            kinematics.strainIncrement( L, de );
+            double s[4] = { sigma_p( p, 0 ), sigma_p( p, 1 ), sigma_p( p, 2 ),
+                            sigma_p( p, 3 ) };
+            kinematics.rotate( L, s );
+
+            const physics::MaterialParams& params = materials[material_p( p )];
+            if ( params.model == physics::Model::MohrCoulomb )
+                mohr_coulomb( params, de, s, eps_p_bar_p( p ) );
+            else
+                linear_elastic( params, de, s );
+
+            for ( int c = 0; c < 4; ++c )
+            {
+                sigma_p( p, c ) = s[c];
+                eps_p( p, c ) += de[c];
+            }
+            vol_p( p ) *= kinematics.volumeRatio( L );
+        } );
+}
+
+} // namespace mpm
+
+#endif // MPM_STRESS_UPDATE_HPP

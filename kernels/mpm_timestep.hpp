@@ -1,0 +1,60 @@
+#ifndef MPM_TIMESTEP_HPP
+#define MPM_TIMESTEP_HPP
+
+#include <mpm_particle_views.hpp>
+#include <physics/mpm_material_params.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
+
+namespace mpm
+{
+//! Result of the CFL reduction.
+struct WaveSpeedLimit
+{
+    double dt_limit;       //!< min over points of h / (c_p + |v_p|), s
+    double max_wave_speed; //!< max over points of c_p, m/s
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief CFL reduction: the P-wave speed of each point,
+  c_p = sqrt(E_c / rho_p), rho_p = m_p / vol_p, gives the stable step
+  h / (c_p + |v_p|) (Courant number 1); returns its minimum and max c_p.
+*/
+template <class ExecSpace>
+WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
+                                 const ParticleViews<ExecSpace>& pv,
+                                 const physics::MaterialTable& materials,
+                                 const double cell_size )
+{
+    namespace KE = Kokkos::Experimental;
+    const auto v_p = pv.v_p;
+    const auto m_p = pv.m_p;
+    const auto vol_p = pv.vol_p;
+    const auto material_p = pv.material_p;
+    const auto status_p = pv.status_p;
+    WaveSpeedLimit limit{ 0.0, 0.0 };
+    Kokkos::parallel_reduce(
+        "mpm::critical_time_step",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
+            if ( status_p( p ) != point_active )
+                return;
+            const double rho = m_p( p ) / vol_p( p );
+            const double c = KE::sqrt(
+                materials[material_p( p )].constrainedModulus() / rho );
+            const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
+                                           v_p( p, 1 ) * v_p( p, 1 ) );
+            const double dt = cell_size / ( c + speed );
+            dt_min = dt < dt_min ? dt : dt_min;
+            c_max = c > c_max ? c : c_max;
+        },
+        Kokkos::Min<double>( limit.dt_limit ),
+        Kokkos::Max<double>( limit.max_wave_speed ) );
+    return limit;
+}
+
+} // namespace mpm
+
+#endif // MPM_TIMESTEP_HPP

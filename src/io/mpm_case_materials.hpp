@@ -1,0 +1,80 @@
+#ifndef MPM_CASE_MATERIALS_HPP
+#define MPM_CASE_MATERIALS_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <io/mpm_toml_access.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+//---------------------------------------------------------------------------//
+// [[materials]] tables and their stage overrides [stages.materials.<name>].
+// Internal to the case reader.
+//---------------------------------------------------------------------------//
+
+//! Material parameters, in the order of the keys in a case file.
+enum Param
+{
+    ParamDensity,
+    ParamYoungsModulus,
+    ParamPoissonRatio,
+    ParamCohesionPeak,
+    ParamCohesionResidual,
+    ParamSofteningModulus,
+    ParamFrictionAngle,
+    ParamDilationAngle,
+    NumMaterialParams
+};
+
+//---------------------------------------------------------------------------//
+// A material as written, remembering where each value was given, so that a
+// stage override can be checked against the values it inherits.
+struct GivenValue
+{
+    double value;
+    const toml::node* node;
+    std::string path;
+    bool from_here; //!< given in the table being checked
+};
+
+struct MaterialDraft
+{
+    std::string name;
+    std::optional<ModelType> model;
+    std::array<std::optional<GivenValue>, NumMaterialParams>
+        params;        //!< by Param
+    bool valid = true; //!< false once a value had a wrong type or range
+};
+
+//---------------------------------------------------------------------------//
+//! \brief Every key allowed in a [[materials]] table.
+std::vector<std::string> materialKeys();
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Read the model and the parameters given in one table over the
+  draft's values (checking each value's type and own range). Values already
+  in the draft are marked as inherited.
+*/
+void readMaterialValues( TableReader& reader, MaterialDraft& draft,
+                         Need model_need );
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The material described by a draft, with defaults applied, after
+  checking required keys, keys only for mohr_coulomb and residual <= peak,
+  dilation <= friction; or nothing after reporting errors to the reader.
+*/
+std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
+                                              TableReader& reader );
+
+} // namespace Impl
+} // namespace mpm
+
+#endif // MPM_CASE_MATERIALS_HPP

@@ -1,0 +1,460 @@
+#include <io/mpm_case_materials.hpp>
+#include <io/mpm_case_reader.hpp>
+#include <io/mpm_case_shapes.hpp>
+#include <io/mpm_toml_access.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace mpm
+{
+namespace
+{
+using Impl::Diagnostics;
+using Impl::finishMaterial;
+using Impl::MaterialDraft;
+using Impl::materialKeys;
+using Impl::Need;
+using Impl::Range;
+using Impl::readMaterialValues;
+using Impl::TableReader;
+
+//---------------------------------------------------------------------------//
+// Reads one case file into a CaseConfig, collecting every error.
+class CaseParser
+{
+  public:
+    CaseParser( Diagnostics& diag, CaseConfig& config )
+        : _diag( diag )
+        , _config( config )
+    {
+    }
+
+    void parse( const toml::table& root_table )
+    {
+        TableReader root( root_table, "", _diag );
+        root.checkKeys( { "case", "grid", "particles", "materials", "bodies",
+                          "boundaries", "solver", "stages" },
+                        "the top level of a case file" );
+        parseCaseTable( root );
+        parseGrid( root );
+        if ( const auto* t = root.subTable( "particles", Need::Optional ) )
+        {
+            TableReader r( *t, "particles", _diag );
+            r.checkKeys( { "points_per_cell" }, "[particles]" );
+            _config.points_per_cell_per_direction =
+                r.integer( "points_per_cell", 1, 6, Need::Optional )
+                    .value_or( _config.points_per_cell_per_direction );
+        }
+        parseMaterials( root );
+        parseBodies( root );
+        if ( const auto* arr = root.tableArray( "boundaries", Need::Optional,
+                                                "[[boundaries]]" ) )
+            _config.boundaries = parseBoundaries( *arr, "boundaries" );
+        parseSolver( root );
+        parseStages( root );
+    }
+
+  private:
+    //! Report a reference to a material that is not defined.
+    void unknownMaterial( const toml::source_position& where,
+                          const std::string& path, const std::string& name )
+    {
+        std::string text = "key '" + path + "': unknown material '" + name +
+                           "'; the materials defined in [[materials]] are " +
+                           Impl::quotedList( _material_names );
+        const std::string guess = Impl::closestWord( name, _material_names );
+        if ( !guess.empty() )
+            text += "; did you mean '" + guess + "'?";
+        _diag.error( where, text );
+    }
+
+    void parseCaseTable( TableReader& root )
+    {
+        const auto* t = root.subTable( "case", Need::Required );
+        if ( !t )
+            return;
+        TableReader r( *t, "case", _diag );
+        r.checkKeys( { "name", "description" }, "[case]" );
+        if ( const auto name = r.string( "name", Need::Required ) )
+        {
+            const bool valid = std::all_of(
+                name->begin(), name->end(),
+                []( char c )
+                {
+                    return std::isalnum( static_cast<unsigned char>( c ) ) ||
+                           c == '_' || c == '-';
+                } );
+            if ( !valid )
+                _diag.mismatch( *r.find( "name" ), "case.name",
+                                "a name of letters, digits, '_' and '-' "
+                                "(it names the output folder)" );
+            _config.name = *name;
+        }
+        _config.description =
+            r.string( "description", Need::Optional, true ).value_or( "" );
+    }
+
+    void parseGrid( TableReader& root )
+    {
+        const auto* t = root.subTable( "grid", Need::Required );
+        if ( !t )
+            return;
+        TableReader r( *t, "grid", _diag );
+        r.checkKeys( { "origin_m", "cell_size_m", "cells" }, "[grid]" );
+        const auto origin = r.point( "origin_m", "m", Need::Required );
+        const auto h =
+            r.number( "cell_size_m", Range::above( 0.0 ), "m", Need::Required );
+        const std::string expected = "an array [nx, ny] of integers >= 1";
+        const toml::node* cells = r.node( "cells", Need::Required, expected );
+        bool cells_ok = false;
+        if ( cells && ( !cells->is_array() || cells->as_array()->size() != 2 ) )
+            _diag.mismatch( *cells, "grid.cells", expected );
+        else if ( cells )
+        {
+            cells_ok = true;
+            for ( int d = 0; d < 2; ++d )
+            {
+                const toml::node& c = *cells->as_array()->get( d );
+                const auto* i = c.as_integer();
+                if ( i && i->get() >= 1 && i->get() <= 1000000 )
+                    _config.grid.cells[d] = static_cast<int>( i->get() );
+                else
+                {
+                    _diag.mismatch( c,
+                                    "grid.cells[" + std::to_string( d ) + "]",
+                                    "an integer in 1..1000000" );
+                    cells_ok = false;
+                }
+            }
+        }
+        if ( origin )
+            _config.grid.origin_m = *origin;
+        if ( h )
+            _config.grid.cell_size_m = *h;
+        _grid_ok = origin && h && cells_ok;
+    }
+
+    void parseMaterials( TableReader& root )
+    {
+        const auto* arr =
+            root.tableArray( "materials", Need::Required, "[[materials]]" );
+        if ( !arr )
+            return;
+        if ( arr->empty() )
+            _diag.mismatch( *arr, "materials",
+                            "at least one material ([[materials]] table)" );
+        std::map<std::string, std::string> first_path;
+        for ( std::size_t k = 0; k < arr->size(); ++k )
+        {
+            const std::string path = "materials[" + std::to_string( k ) + "]";
+            TableReader r( *arr->get( k )->as_table(), path, _diag );
+            r.checkKeys( materialKeys(), "[[materials]]" );
+            MaterialDraft draft;
+            if ( const auto name = r.string( "name", Need::Required ) )
+            {
+                draft.name = *name;
+                if ( first_path.count( *name ) )
+                    _diag.keyError( *r.find( "name" ), path + ".name",
+                                    "duplicate material name '" + *name +
+                                        "' (already used by " +
+                                        first_path[*name] +
+                                        "); material names must be unique" );
+                else
+                    first_path[*name] = path;
+            }
+            readMaterialValues( r, draft, Need::Required );
+            const auto material = finishMaterial( draft, r );
+            if ( material )
+                _config.materials.push_back( *material );
+            _drafts.push_back( draft );
+            _material_names.push_back( draft.name );
+            _materials_ok = _materials_ok && material && !draft.name.empty();
+        }
+    }
+
+    //! Index of a material by name, or -1.
+    int materialIndex( const std::string& name ) const
+    {
+        const auto it =
+            std::find( _material_names.begin(), _material_names.end(), name );
+        return it == _material_names.end()
+                   ? -1
+                   : static_cast<int>( it - _material_names.begin() );
+    }
+
+    void parseBodies( TableReader& root )
+    {
+        const auto* arr =
+            root.tableArray( "bodies", Need::Required, "[[bodies]]" );
+        if ( !arr )
+            return;
+        if ( arr->empty() )
+            _diag.mismatch( *arr, "bodies", "at least one [[bodies]] table" );
+        for ( std::size_t k = 0; k < arr->size(); ++k )
+        {
+            const std::string path = "bodies[" + std::to_string( k ) + "]";
+            TableReader r( *arr->get( k )->as_table(), path, _diag );
+            r.checkKeys( { "material", "polygon_m" }, "[[bodies]]" );
+            BodyConfig body;
+            if ( const auto name = r.string( "material", Need::Required ) )
+            {
+                body.material = *name;
+                body.material_id = materialIndex( *name );
+                if ( body.material_id < 0 && !_material_names.empty() )
+                    unknownMaterial( r.find( "material" )->source().begin,
+                                     path + ".material", *name );
+            }
+            if ( auto polygon =
+                     r.points( "polygon_m", 3, "m", Need::Required ) )
+            {
+                Impl::checkBodyPolygon(
+                    *polygon, *r.find( "polygon_m" ), path + ".polygon_m",
+                    _grid_ok ? &_config.grid : nullptr, _diag );
+                body.polygon_m = *polygon;
+            }
+            _config.bodies.push_back( body );
+        }
+    }
+
+    std::vector<BoundaryConfig> parseBoundaries( const toml::array& arr,
+                                                 const std::string& prefix )
+    {
+        std::vector<BoundaryConfig> result;
+        for ( std::size_t k = 0; k < arr.size(); ++k )
+        {
+            const std::string path = prefix + "[" + std::to_string( k ) + "]";
+            TableReader r( *arr.get( k )->as_table(), path, _diag );
+            r.checkKeys( { "where", "condition", "polyline_m" },
+                         "[[" + prefix + "]]" );
+            BoundaryConfig bc;
+            const auto where = r.choice(
+                "where", { "left", "right", "bottom", "top", "below_polyline" },
+                Need::Required );
+            const auto condition = r.choice(
+                "condition", { "fixed", "fix_x", "fix_y" }, Need::Required );
+            if ( where )
+                bc.where = static_cast<BoundarySelector>( *where );
+            if ( condition )
+                bc.condition = static_cast<BoundaryCondition>( *condition );
+            if ( where && bc.where == BoundarySelector::BelowPolyline )
+            {
+                if ( auto line =
+                         r.points( "polyline_m", 2, "m", Need::Required ) )
+                {
+                    Impl::checkPolyline( *line, *r.find( "polyline_m" ),
+                                         path + ".polyline_m", _diag );
+                    bc.polyline_m = *line;
+                }
+            }
+            else if ( where && r.find( "polyline_m" ) )
+                _diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
+                                "only for where = \"below_polyline\"; remove "
+                                "it or change 'where'" );
+            result.push_back( bc );
+        }
+        return result;
+    }
+
+    void parseSolver( TableReader& root )
+    {
+        const auto* t = root.subTable( "solver", Need::Optional );
+        if ( !t )
+            return;
+        TableReader r( *t, "solver", _diag );
+        r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
+                       "remove_points_leaving_grid",
+                       "instability_speed_factor" },
+                     "[solver]" );
+        SolverConfig& s = _config.solver;
+        s.courant_number = r.number( "courant_number",
+                                     Range::interval( 0.0, true, 1.0, false ),
+                                     "", Need::Optional )
+                               .value_or( s.courant_number );
+        s.dt_s = r.number( "dt_s", Range::atLeast( 0.0 ), "s (0 = automatic)",
+                           Need::Optional )
+                     .value_or( s.dt_s );
+        s.flip_fraction = r.number( "flip_fraction",
+                                    Range::interval( 0.0, false, 1.0, false ),
+                                    "", Need::Optional )
+                              .value_or( s.flip_fraction );
+        s.bbar = r.boolean( "bbar", Need::Optional ).value_or( s.bbar );
+        s.remove_points_leaving_grid =
+            r.boolean( "remove_points_leaving_grid", Need::Optional )
+                .value_or( s.remove_points_leaving_grid );
+        s.instability_speed_factor =
+            r.number( "instability_speed_factor", Range::above( 0.0 ), "",
+                      Need::Optional )
+                .value_or( s.instability_speed_factor );
+    }
+
+    void parseStages( TableReader& root )
+    {
+        const auto* arr =
+            root.tableArray( "stages", Need::Required, "[[stages]]" );
+        if ( !arr )
+            return;
+        if ( arr->empty() )
+            _diag.mismatch( *arr, "stages", "at least one [[stages]] table" );
+        std::map<std::string, std::string> first_path;
+        for ( std::size_t k = 0; k < arr->size(); ++k )
+        {
+            const std::string path = "stages[" + std::to_string( k ) + "]";
+            TableReader r( *arr->get( k )->as_table(), path, _diag );
+            r.checkKeys( { "name", "type", "gravity_m_per_s2", "damping",
+                           "duration_s", "ke_ratio_tolerance",
+                           "snapshot_interval_s", "reset_displacement",
+                           "materials", "boundaries" },
+                         "[[stages]]" );
+            StageConfig stage;
+            if ( const auto name = r.string( "name", Need::Required ) )
+            {
+                stage.name = *name;
+                if ( first_path.count( *name ) )
+                    _diag.keyError( *r.find( "name" ), path + ".name",
+                                    "duplicate stage name '" + *name +
+                                        "' (already used by " +
+                                        first_path[*name] + ")" );
+                first_path.emplace( *name, path );
+            }
+            const auto type = r.choice( "type", { "quasi_static", "dynamic" },
+                                        Need::Required );
+            if ( type )
+                stage.type = static_cast<StageType>( *type );
+            const bool quasi_static = stage.type == StageType::QuasiStatic;
+            stage.gravity_m_per_s2 =
+                r.point( "gravity_m_per_s2", "m/s^2", Need::Optional )
+                    .value_or( stage.gravity_m_per_s2 );
+            stage.damping =
+                r.number( "damping", Range::interval( 0.0, false, 1.0, true ),
+                          "", Need::Optional )
+                    .value_or( quasi_static ? 0.7 : 0.0 );
+            stage.duration_s = r.number( "duration_s", Range::above( 0.0 ), "s",
+                                         Need::Required )
+                                   .value_or( 0.0 );
+            if ( type && !quasi_static && r.find( "ke_ratio_tolerance" ) )
+                _diag.keyError( *r.find( "ke_ratio_tolerance" ),
+                                path + ".ke_ratio_tolerance",
+                                "only for type \"quasi_static\"; a dynamic "
+                                "stage runs for duration_s" );
+            else
+                stage.ke_ratio_tolerance =
+                    r.number( "ke_ratio_tolerance",
+                              Range::interval( 0.0, true, 1.0, true ), "",
+                              Need::Optional )
+                        .value_or( stage.ke_ratio_tolerance );
+            stage.snapshot_interval_s =
+                r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
+                          "s (0 = at the stage end only)", Need::Optional )
+                    .value_or( 0.0 );
+            stage.reset_displacement =
+                r.boolean( "reset_displacement", Need::Optional )
+                    .value_or( false );
+            stage.materials = _config.materials;
+            if ( const auto* t = r.subTable( "materials", Need::Optional ) )
+                parseOverrides( *t, path + ".materials", stage );
+            stage.boundaries = _config.boundaries;
+            if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
+                                               "[[stages.boundaries]]" ) )
+                stage.boundaries = parseBoundaries( *b, path + ".boundaries" );
+            _config.stages.push_back( stage );
+        }
+    }
+
+    //! Apply [stages.materials.<name>] tables to the stage's materials.
+    void parseOverrides( const toml::table& overrides, const std::string& path,
+                         StageConfig& stage )
+    {
+        for ( auto&& [key, node] : overrides )
+        {
+            const std::string name( key.str() );
+            const std::string sub_path = Impl::joinPath( path, name );
+            const int id = materialIndex( name );
+            if ( id < 0 )
+            {
+                unknownMaterial( key.source().begin, sub_path, name );
+                continue;
+            }
+            if ( !node.is_table() )
+            {
+                _diag.mismatch( node, sub_path,
+                                "a table of material parameters "
+                                "[" +
+                                    sub_path + "]" );
+                continue;
+            }
+            TableReader r( *node.as_table(), sub_path, _diag );
+            auto keys = materialKeys();
+            keys.erase( std::find( keys.begin(), keys.end(), "name" ) );
+            r.checkKeys( keys, "a stage material override", { "name" } );
+            if ( const auto* n = r.find( "name" ) )
+                _diag.keyError( *n, r.keyPath( "name" ),
+                                "a stage cannot rename a material; the table "
+                                "name selects the material ('" +
+                                    name + "')" );
+            MaterialDraft draft = _drafts[id];
+            readMaterialValues( r, draft, Need::Optional );
+            if ( !_materials_ok )
+                continue;
+            if ( const auto material = finishMaterial( draft, r ) )
+                stage.materials[id] = *material;
+        }
+    }
+
+    Diagnostics& _diag;
+    CaseConfig& _config;
+    bool _grid_ok = false;
+    bool _materials_ok = true;
+    std::vector<MaterialDraft> _drafts;
+    std::vector<std::string> _material_names;
+};
+
+} // namespace
+
+//---------------------------------------------------------------------------//
+CaseConfig parseCase( const std::string& toml_text,
+                      const std::string& file_name )
+{
+    toml::table root;
+    try
+    {
+        root = toml::parse( std::string_view( toml_text ),
+                            std::string_view( file_name ) );
+    }
+    catch ( const toml::parse_error& e )
+    {
+        Diagnostics syntax( file_name );
+        syntax.error( e.source().begin,
+                      "invalid TOML: " + std::string( e.description() ) );
+        throw CaseError( syntax.report() );
+    }
+
+    CaseConfig config;
+    config.file = file_name;
+    Diagnostics diag( file_name );
+    CaseParser( diag, config ).parse( root );
+    if ( !diag.empty() )
+        throw CaseError( diag.report() );
+    return config;
+}
+
+//---------------------------------------------------------------------------//
+CaseConfig readCaseFile( const std::string& path )
+{
+    std::ifstream in( path, std::ios::binary );
+    if ( !in )
+        throw CaseError( path + ": error: cannot open the case file (" +
+                         std::strerror( errno ) + ")" );
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseCase( text.str(), path );
+}
+
+} // namespace mpm

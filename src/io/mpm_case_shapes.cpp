@@ -1,0 +1,127 @@
+#include <io/mpm_case_shapes.hpp>
+#include <setup/mpm_geometry.hpp>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+namespace
+{
+//---------------------------------------------------------------------------//
+// "(x, y)" of a point, for messages.
+std::string pointText( const Point2& p )
+{
+    return "(" + formatNumber( p[0] ) + ", " + formatNumber( p[1] ) + ")";
+}
+
+//---------------------------------------------------------------------------//
+std::string indexed( const std::string& path, const std::size_t k )
+{
+    return path + "[" + std::to_string( k ) + "]";
+}
+
+} // namespace
+
+//---------------------------------------------------------------------------//
+void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
+                       const std::string& path, const GridConfig* grid,
+                       Diagnostics& diag )
+{
+    const auto& arr = *node.as_array();
+    if ( polygon.size() > 1 && polygon.front() == polygon.back() )
+        polygon.pop_back(); // a repeated closing vertex is allowed
+    const std::size_t n = polygon.size();
+    if ( n < 3 )
+    {
+        diag.mismatch( node, path,
+                       "at least 3 distinct vertices [[x, y], ...] in m "
+                       "(a repeated closing vertex is ignored)" );
+        return;
+    }
+
+    // Consecutive vertices must differ.
+    for ( std::size_t k = 0; k < n; ++k )
+    {
+        const std::size_t next = ( k + 1 ) % n;
+        if ( polygon[k] == polygon[next] )
+        {
+            diag.keyError( *arr.get( next ), indexed( path, next ),
+                           "vertex " + pointText( polygon[k] ) +
+                               " m is repeated; consecutive polygon vertices "
+                               "must differ" );
+            return;
+        }
+    }
+
+    // The outline must not cross or touch itself.
+    int a = 0, b = 0;
+    if ( geometry::findSelfIntersection( polygon, a, b ) )
+    {
+        auto edge = [&]( const int e )
+        {
+            return "edge " + std::to_string( e ) + " " +
+                   pointText( polygon[e] ) + "-" +
+                   pointText( polygon[( e + 1 ) % n] );
+        };
+        diag.keyError( node, path,
+                       "expected a simple polygon, found one that intersects "
+                       "itself: " +
+                           edge( a ) + " and " + edge( b ) +
+                           " m cross or overlap; list the vertices in order "
+                           "around the outline of the body" );
+        return;
+    }
+
+    // Every vertex inside the grid (up to round-off).
+    if ( !grid )
+        return;
+    const GridConfig& g = *grid;
+    const double tol = 1e-9 * g.cell_size_m;
+    auto upper = [&]( const int d )
+    { return g.origin_m[d] + g.cells[d] * g.cell_size_m; };
+    for ( std::size_t k = 0; k < n; ++k )
+    {
+        bool inside = true;
+        for ( int d = 0; d < 2; ++d )
+            inside = inside && polygon[k][d] >= g.origin_m[d] - tol &&
+                     polygon[k][d] <= upper( d ) + tol;
+        if ( inside )
+            continue;
+        auto span = [&]( const int d )
+        {
+            return "[" + formatNumber( g.origin_m[d] ) + ", " +
+                   formatNumber( upper( d ) ) + "]";
+        };
+        diag.keyError( *arr.get( k ), indexed( path, k ),
+                       "expected a vertex inside the grid, x in " + span( 0 ) +
+                           " m and y in " + span( 1 ) +
+                           " m (grid.origin_m + grid.cells * "
+                           "grid.cell_size_m), found " +
+                           pointText( polygon[k] ) + " m" );
+        return;
+    }
+}
+
+//---------------------------------------------------------------------------//
+void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
+                    const std::string& path, Diagnostics& diag )
+{
+    for ( std::size_t k = 1; k < line.size(); ++k )
+    {
+        if ( !( line[k][0] > line[k - 1][0] ) )
+        {
+            diag.keyError( *node.as_array()->get( k ), indexed( path, k ),
+                           "expected x > " + formatNumber( line[k - 1][0] ) +
+                               " m (x must increase strictly along the "
+                               "polyline), found x = " +
+                               formatNumber( line[k][0] ) + " m" );
+            return;
+        }
+    }
+}
+
+} // namespace Impl
+} // namespace mpm

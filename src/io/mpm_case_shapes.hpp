@@ -1,0 +1,39 @@
+#ifndef MPM_CASE_SHAPES_HPP
+#define MPM_CASE_SHAPES_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <io/mpm_case_diagnostics.hpp>
+
+#include <toml++/toml.h>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+//---------------------------------------------------------------------------//
+// Checks of the shapes in a case file. Internal to the case reader.
+//---------------------------------------------------------------------------//
+
+/*!
+  \brief Check a body polygon read from node (an array of points) at path:
+  at least 3 distinct vertices, no repeated consecutive vertex, no
+  self-intersection and, if grid is given, every vertex inside the grid.
+
+  A repeated closing vertex is removed from polygon.
+*/
+void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
+                       const std::string& path, const GridConfig* grid,
+                       Diagnostics& diag );
+
+//---------------------------------------------------------------------------//
+//! \brief Check that the x of a boundary polyline increase strictly.
+void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
+                    const std::string& path, Diagnostics& diag );
+
+} // namespace Impl
+} // namespace mpm
+
+#endif // MPM_CASE_SHAPES_HPP

@@ -1,0 +1,149 @@
+#ifndef MPM_SNAPSHOT_WRITER_HPP
+#define MPM_SNAPSHOT_WRITER_HPP
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief One particle field in host memory, n_points x components,
+  row-major (point-major): value (p, c) is data[p * components + c].
+*/
+struct FieldRef
+{
+    std::string name;
+    const double* data;
+    int components;
+    std::string unit;
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief One integer particle field in host memory, n_points values.
+  Stored as int32 with unit "1".
+*/
+struct IntFieldRef
+{
+    std::string name;
+    const int* data;
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Crash-safe particle snapshot output (HDF5 + XDMF) that ParaView
+  opens as a time series.
+
+  HDF5 layout (format "rainslide-particles-1"):
+  \code
+  /                      attrs: format = "rainslide-particles-1" (string),
+                                snapshot_count (int64, complete snapshots)
+  /vertex_ids            int32 [n_max], 0..n_max-1: Polyvertex connectivity
+  /snapshots/NNNNNN      attrs: time_s (double), stage (string),
+                                stage_time_s (double), step (int64),
+                                n_points (int64)
+  /snapshots/NNNNNN/<f>  float64 [n] or [n x components], attr unit (string)
+  /snapshots/NNNNNN/<i>  int32 [n], attr unit = "1"
+  \endcode
+  The field "x" (2 components, metres) holds the particle positions.
+
+  While running, the file is `<out_dir>/<stem>.h5.partial`; it is flushed
+  after each write(), so a process killed between two write() calls leaves a
+  readable file holding every snapshot written so far. finalize() renames it
+  to `<stem>.h5` and writes `<stem>.xdmf`: a Temporal collection of
+  Polyvertex grids, geometry XY from "x", every other field a node-centred
+  Attribute (1 component: Scalar; 2 or 3: Vector, which ParaView's XDMF
+  readers turn into a 3-component vector with z = 0 for 2 components; any
+  other count: Matrix, read by ParaView as one array with that many
+  components, e.g. sigma with 4).
+
+  Errors throw std::runtime_error naming the file, the object and the HDF5
+  operation; invalid arguments throw std::invalid_argument.
+*/
+class SnapshotWriter
+{
+  public:
+    /*!
+      \brief Creates out_dir if needed and opens
+      `<out_dir>/<stem>.h5.partial` (truncating any stale one).
+    */
+    SnapshotWriter( const std::string& out_dir,
+                    const std::string& stem = "particles" );
+
+    //! \brief Calls finalize() if needed; never throws.
+    ~SnapshotWriter();
+
+    SnapshotWriter( const SnapshotWriter& ) = delete;
+    SnapshotWriter& operator=( const SnapshotWriter& ) = delete;
+
+    /*!
+      \brief Appends one snapshot as group /snapshots/NNNNNN and flushes the
+      file (H5Fflush).
+
+      \param time_s simulation time [s]
+      \param stage name of the current stage (e.g. "gravity", "rainfall")
+      \param stage_time_s time since the stage began [s]
+      \param step time-step counter
+      \param n_points number of particles
+      \param fields double fields; must contain "x" with 2 components [m]
+      \param int_fields integer fields
+    */
+    void write( double time_s, const std::string& stage, double stage_time_s,
+                long step, int n_points, const std::vector<FieldRef>& fields,
+                const std::vector<IntFieldRef>& int_fields );
+
+    /*!
+      \brief Closes the file, renames `.h5.partial` to `.h5` (std::rename)
+      and writes `<stem>.xdmf` through a temporary file + rename.
+      Idempotent: later calls do nothing.
+    */
+    void finalize();
+
+    //! \brief Final HDF5 path `<out_dir>/<stem>.h5`.
+    std::string h5Path() const { return _h5_path; }
+
+    //! \brief Final XDMF path `<out_dir>/<stem>.xdmf`.
+    std::string xdmfPath() const { return _xdmf_path; }
+
+    //! \brief Path of the HDF5 file while running (`<stem>.h5.partial`).
+    std::string partialPath() const { return _partial_path; }
+
+    //! \brief Number of snapshots written so far.
+    int snapshotCount() const { return static_cast<int>( _records.size() ); }
+
+  private:
+    // What finalize() needs to describe one snapshot in the XDMF file.
+    struct FieldRecord
+    {
+        std::string name;
+        int components;
+        bool is_int;
+    };
+    struct SnapshotRecord
+    {
+        double time_s;
+        std::string stage;
+        double stage_time_s;
+        long step;
+        long n_points;
+        std::vector<FieldRecord> fields;
+    };
+
+    void writeVertexIds( long n_points );
+    std::string buildXdmf() const;
+
+    std::string _stem;
+    std::string _h5_path;
+    std::string _partial_path;
+    std::string _xdmf_path;
+    std::int64_t _file_id = -1; // hid_t of the open file
+    long _vertex_id_count = 0;  // current size of /vertex_ids
+    std::vector<SnapshotRecord> _records;
+    bool _finalized = false;
+};
+
+} // namespace mpm
+
+#endif // MPM_SNAPSHOT_WRITER_HPP

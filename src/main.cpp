@@ -1,0 +1,122 @@
+// rainslide: command-line interface.
+//   rainslide run CASE [--out DIR] [--backend serial|openmp] [--threads N]
+//   rainslide check CASE
+#include <io/mpm_case_reader.hpp>
+#include <mpm_config.hpp>
+#include <solver/mpm_run_case.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+//! Exit codes: 0 success, 1 run failed (unstable), 2 bad input, 130
+//! interrupted.
+constexpr int exit_failed = 1;
+constexpr int exit_bad_input = 2;
+constexpr int exit_interrupted = 130;
+
+int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
+{
+    Kokkos::InitArguments args;
+    args.num_threads = options.threads;
+    args.disable_warnings = true;
+    Kokkos::ScopeGuard guard( args );
+    mpm::RunStatus status = mpm::RunStatus::Failed;
+    if ( options.backend == "serial" )
+    {
+        options.threads = 1;
+        status = mpm::runCase<Kokkos::Serial>( config, options );
+    }
+    else
+        status = mpm::runCase<Kokkos::OpenMP>( config, options );
+    switch ( status )
+    {
+    case mpm::RunStatus::Completed:
+        return 0;
+    case mpm::RunStatus::Interrupted:
+        return exit_interrupted;
+    case mpm::RunStatus::Failed:
+        break;
+    }
+    return exit_failed;
+}
+
+void printCheckSummary( const mpm::CaseConfig& config )
+{
+    std::cout << config.file << ": ok\n"
+              << "  case " << config.name << ": grid " << config.grid.cells[0]
+              << " x " << config.grid.cells[1] << " cells of "
+              << config.grid.cell_size_m << " m, " << config.materials.size()
+              << " material(s), " << config.bodies.size() << " body(ies), "
+              << config.stages.size() << " stage(s)\n";
+}
+} // namespace
+
+int main( int argc, char* argv[] )
+{
+    CLI::App app{ "rainslide " RAINSLIDE_VERSION
+                  ": two-phase material point simulator of rainfall-induced "
+                  "slope failure" };
+    app.require_subcommand( 1 );
+
+    std::string case_file;
+    mpm::RunOptions options;
+    options.backend = RAINSLIDE_DEFAULT_BACKEND;
+    options.threads = 2;
+    bool quiet = false;
+
+    CLI::App* run = app.add_subcommand( "run", "run a case" );
+    run->add_option( "case", case_file, "case file (TOML)" )->required();
+    run->add_option( "--out", options.out_dir,
+                     "output folder (default results/<case name>)" );
+    run->add_option( "--backend", options.backend, "execution backend" )
+        ->check( CLI::IsMember( { "serial", "openmp" } ) )
+        ->capture_default_str();
+    run->add_option( "--threads", options.threads, "OpenMP threads" )
+        ->check( CLI::Range( 1, 1024 ) )
+        ->capture_default_str();
+    run->add_flag( "--quiet", quiet, "no progress lines" );
+
+    CLI::App* check = app.add_subcommand( "check", "validate a case file" );
+    check->add_option( "case", case_file, "case file (TOML)" )->required();
+
+    CLI11_PARSE( app, argc, argv );
+
+    mpm::CaseConfig config;
+    try
+    {
+        config = mpm::readCaseFile( case_file );
+    }
+    catch ( const mpm::CaseError& error )
+    {
+        std::cerr << error.what() << "\n";
+        return exit_bad_input;
+    }
+    if ( check->parsed() )
+    {
+        printCheckSummary( config );
+        return 0;
+    }
+    if ( options.out_dir.empty() )
+        options.out_dir = "results/" + config.name;
+    options.progress = !quiet;
+    try
+    {
+        return runWithKokkos( config, options );
+    }
+    catch ( const mpm::SimulationError& error )
+    {
+        std::cerr << "rainslide: error: " << error.what() << "\n";
+        return exit_failed;
+    }
+    catch ( const std::exception& error )
+    {
+        std::cerr << "rainslide: error: " << error.what() << "\n";
+        return exit_failed;
+    }
+}

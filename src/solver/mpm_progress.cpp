@@ -1,0 +1,127 @@
+#include <solver/mpm_progress.hpp>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+namespace mpm
+{
+namespace
+{
+std::atomic<bool> interrupt_flag{ false };
+
+extern "C" void onInterrupt( int ) { interrupt_flag.store( true ); }
+} // namespace
+
+void installInterruptHandler()
+{
+    interrupt_flag.store( false );
+    std::signal( SIGINT, onInterrupt );
+    std::signal( SIGTERM, onInterrupt );
+}
+
+bool interruptRequested() { return interrupt_flag.load(); }
+
+//---------------------------------------------------------------------------//
+ProgressPrinter::ProgressPrinter( const std::string& case_name,
+                                  const int num_points, const bool enabled,
+                                  const double interval_s )
+    : _case_name( case_name )
+    , _num_points( num_points )
+    , _enabled( enabled )
+    , _interval_s( interval_s )
+    , _start( clock::now() )
+    , _last_print( clock::now() )
+    , _stage_start( clock::now() )
+{
+}
+
+void ProgressPrinter::update( const RunProgress& progress )
+{
+    if ( progress.stage_step == 1 )
+    {
+        _stage_start = clock::now();
+        _stage_start_step = progress.step - 1;
+    }
+    const auto now = clock::now();
+    if ( !_enabled ||
+         std::chrono::duration<double>( now - _last_print ).count() <
+             _interval_s )
+        return;
+    _last_print = now;
+    const double wall = std::chrono::duration<double>( now - _start ).count();
+    const double stage_wall =
+        std::chrono::duration<double>( now - _stage_start ).count();
+    const double fraction = progress.stage_time_s / progress.stage_duration_s;
+    const double eta =
+        fraction > 0.0 ? stage_wall * ( 1.0 - fraction ) / fraction : 0.0;
+    const double rate = stage_wall > 0.0
+                            ? double( progress.step - _stage_start_step ) *
+                                  progress.active_points / stage_wall
+                            : 0.0;
+    std::fprintf(
+        stderr,
+        "[%s] stage %s  step %ld  t = %.4g s (stage %.4g / %.4g s)  "
+        "dt = %.3g s  wall %.1f s  stage ETA <= %.0f s  %.3g MP-updates/s\n",
+        _case_name.c_str(), progress.stage.c_str(), progress.step,
+        progress.time_s, progress.stage_time_s, progress.stage_duration_s,
+        progress.dt_s, wall, eta, rate );
+}
+
+void ProgressPrinter::stageEnd( const RunProgress& progress,
+                                const StageSummary& summary )
+{
+    if ( !_enabled )
+        return;
+    std::fprintf( stderr, "[%s] stage %s finished: %ld steps, %.4g s simulated",
+                  _case_name.c_str(), summary.name.c_str(), summary.steps,
+                  summary.duration_s );
+    if ( summary.type == "quasi_static" )
+        std::fprintf( stderr, ", kinetic-energy ratio %.3g (%s)",
+                      summary.ke_ratio,
+                      summary.converged ? "converged" : "NOT converged" );
+    std::fprintf( stderr, ", %d active points\n", progress.active_points );
+}
+
+void ProgressPrinter::finish() { std::fflush( stderr ); }
+
+void ProgressPrinter::summary( const nlohmann::json& metrics ) const
+{
+    std::fprintf(
+        stderr,
+        "[%s] %s: %ld steps, %.4g s simulated, wall %.2f s, %.3g "
+        "MP-updates/s, %d points, backend %s with %d thread(s)\n"
+        "[%s] results: %s, metrics: %s/metrics.json\n",
+        _case_name.c_str(), metrics.value( "status", std::string() ).c_str(),
+        metrics.value( "steps", 0L ), metrics.value( "simulated_time_s", 0.0 ),
+        metrics.value( "wall_s", 0.0 ),
+        metrics.value( "mp_updates_per_s", 0.0 ), _num_points,
+        metrics.value( "backend", std::string() ).c_str(),
+        metrics.value( "threads", 1 ), _case_name.c_str(),
+        metrics["output"].value( "xdmf", std::string() ).c_str(),
+        metrics.value( "output_dir", std::string( "." ) ).c_str() );
+}
+
+//---------------------------------------------------------------------------//
+void writeSnapshot( SnapshotWriter& writer, const RunProgress& progress,
+                    const HostSnapshot& snap )
+{
+    const std::vector<FieldRef> fields = {
+        { "x", snap.x.data(), 2, "m" },
+        { "displacement", snap.displacement.data(), 2, "m" },
+        { "velocity", snap.v.data(), 2, "m/s" },
+        { "stress", snap.sigma.data(), 4, "Pa" },
+        { "strain", snap.eps.data(), 4, "-" },
+        { "plastic_shear_strain", snap.eps_p_bar.data(), 1, "-" },
+        { "volume", snap.vol.data(), 1, "m^3/m" },
+        { "mass", snap.mass.data(), 1, "kg/m" } };
+    const std::vector<IntFieldRef> int_fields = {
+        { "material", snap.material.data() },
+        { "id", snap.id.data() },
+        { "status", snap.status.data() } };
+    writer.write( progress.time_s, progress.stage, progress.stage_time_s,
+                  progress.step, snap.num_points, fields, int_fields );
+}
+
+} // namespace mpm

@@ -1,0 +1,63 @@
+#ifndef MPM_RUN_OBSERVER_HPP
+#define MPM_RUN_OBSERVER_HPP
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+//! Where a run stands; passed to observers.
+struct RunProgress
+{
+    std::string stage;
+    int stage_index = 0;
+    long step = 0;             //!< steps since the start of the run
+    long stage_step = 0;       //!< steps since the start of the stage
+    double time_s = 0.0;       //!< simulated time since the start of the run
+    double stage_time_s = 0.0; //!< simulated time since the start of the stage
+    double stage_duration_s = 0.0;
+    double dt_s = 0.0;
+    double kinetic_energy_j = 0.0;
+    int active_points = 0;
+};
+
+//! Summary of one finished stage.
+struct StageSummary
+{
+    std::string name;
+    std::string type;
+    long steps = 0;
+    double duration_s = 0.0;
+    double dt_min_s = 0.0;
+    double dt_max_s = 0.0;
+    //! Quasi-static: final E_kin / max E_kin, and whether it met the tolerance.
+    double ke_ratio = 0.0;
+    bool converged = true;
+};
+
+//! Host copies of every particle field, point-major.
+struct HostSnapshot
+{
+    int num_points = 0;
+    std::vector<double> x, displacement, v, sigma, eps, eps_p_bar, vol, mass;
+    std::vector<int> material, id, status;
+};
+
+//! Receives progress, snapshots and stage ends of a run.
+class RunObserver
+{
+  public:
+    virtual ~RunObserver() = default;
+    //! Called after every step.
+    virtual void onStep( const RunProgress& ) {}
+    //! Called when the case asks for a snapshot.
+    virtual void onSnapshot( const RunProgress&, const HostSnapshot& ) {}
+    //! Called at the end of each stage.
+    virtual void onStageEnd( const RunProgress&, const StageSummary& ) {}
+    //! Polled between steps; returning true stops the run cleanly.
+    virtual bool stopRequested() { return false; }
+};
+
+} // namespace mpm
+
+#endif // MPM_RUN_OBSERVER_HPP

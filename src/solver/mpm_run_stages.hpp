@@ -1,0 +1,185 @@
+#ifndef MPM_RUN_STAGES_HPP
+#define MPM_RUN_STAGES_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <solver/mpm_run_observer.hpp>
+#include <solver/mpm_simulation.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace mpm
+{
+//! Outcome of runStages.
+struct RunSummary
+{
+    std::vector<StageSummary> stages;
+    long steps = 0;
+    double dt_min_s = 0.0;
+    double dt_max_s = 0.0;
+    bool interrupted = false; //!< stopped by RunObserver::stopRequested
+};
+
+//---------------------------------------------------------------------------//
+//! Host copy of every particle field of a simulation.
+template <class ExecSpace>
+HostSnapshot hostSnapshot( const Simulation<ExecSpace>& sim )
+{
+    const auto& pv = sim.particles;
+    HostSnapshot snap;
+    snap.num_points = pv.size();
+    auto copy = []( const auto& view, auto& out )
+    {
+        auto h =
+            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
+        out.assign( h.data(), h.data() + h.span() );
+    };
+    copy( pv.x_p, snap.x );
+    copy( pv.v_p, snap.v );
+    copy( pv.sigma_p, snap.sigma );
+    copy( pv.eps_p, snap.eps );
+    copy( pv.eps_p_bar_p, snap.eps_p_bar );
+    copy( pv.vol_p, snap.vol );
+    copy( pv.m_p, snap.mass );
+    copy( pv.material_p, snap.material );
+    copy( pv.id_p, snap.id );
+    copy( pv.status_p, snap.status );
+    std::vector<double> x0;
+    copy( pv.x0_p, x0 );
+    snap.displacement.resize( x0.size() );
+    for ( std::size_t k = 0; k < x0.size(); ++k )
+        snap.displacement[k] = snap.x[k] - x0[k];
+    return snap;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Time step of a stage: the fixed dt_s of the case, refused if it
+  exceeds the CFL limit, or Courant number times the CFL limit.
+*/
+inline double chooseTimeStep( const SolverConfig& solver,
+                              const WaveSpeedLimit& limit )
+{
+    if ( solver.dt_s <= 0.0 )
+        return solver.courant_number * limit.dt_limit;
+    if ( solver.dt_s > limit.dt_limit )
+    {
+        std::ostringstream msg;
+        msg << "solver.dt_s = " << solver.dt_s << " s exceeds the stable limit "
+            << limit.dt_limit
+            << " s (cell size / (P-wave speed + point speed), largest P-wave "
+               "speed "
+            << limit.max_wave_speed << " m/s); use dt_s <= " << limit.dt_limit
+            << " s or dt_s = 0 for the automatic step";
+        throw SimulationError( msg.str() );
+    }
+    return solver.dt_s;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Runs every stage of `config` on `sim`: quasi-static stages until
+  E_kin / max E_kin < tolerance (or their duration), dynamic stages for
+  their duration. Snapshots at the requested interval and at stage ends.
+*/
+template <class ExecSpace>
+RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
+                      RunObserver& observer )
+{
+    RunSummary summary;
+    summary.dt_min_s = 1.0e300;
+    // Quasi-static stages check convergence only after this many steps.
+    const long min_quasi_static_steps = 20;
+
+    for ( std::size_t s = 0; s < config.stages.size(); ++s )
+    {
+        const StageConfig& stage = config.stages[s];
+        sim.applyStage( stage );
+        const bool quasi_static = stage.type == StageType::QuasiStatic;
+        const StepSettings settings{ stage.gravity_m_per_s2[0],
+                                     stage.gravity_m_per_s2[1], stage.damping };
+
+        StageSummary stage_summary;
+        stage_summary.name = stage.name;
+        stage_summary.type = quasi_static ? "quasi_static" : "dynamic";
+        stage_summary.dt_min_s = 1.0e300;
+        stage_summary.converged = !quasi_static;
+
+        RunProgress progress;
+        progress.stage = stage.name;
+        progress.stage_index = static_cast<int>( s );
+        progress.stage_duration_s = stage.duration_s;
+        double ke_max = 0.0;
+        double next_snapshot = stage.snapshot_interval_s;
+        const double end_tolerance = 1.0e-12 * stage.duration_s;
+
+        while ( progress.stage_time_s < stage.duration_s - end_tolerance )
+        {
+            if ( observer.stopRequested() )
+            {
+                summary.interrupted = true;
+                break;
+            }
+            const WaveSpeedLimit limit = sim.waveSpeedLimit();
+            double dt = chooseTimeStep( sim.solver, limit );
+            dt = std::min( dt, stage.duration_s - progress.stage_time_s );
+            sim.advance( dt, settings );
+            sim.checkStability( dt, limit );
+
+            progress.step = sim.step;
+            ++progress.stage_step;
+            progress.time_s = sim.time;
+            progress.stage_time_s += dt;
+            progress.dt_s = dt;
+            progress.kinetic_energy_j =
+                kineticEnergy( ExecSpace(), sim.particles );
+            progress.active_points = sim.numActivePoints();
+            stage_summary.dt_min_s = std::min( stage_summary.dt_min_s, dt );
+            stage_summary.dt_max_s = std::max( stage_summary.dt_max_s, dt );
+            observer.onStep( progress );
+
+            if ( stage.snapshot_interval_s > 0.0 &&
+                 progress.stage_time_s >= next_snapshot - end_tolerance &&
+                 progress.stage_time_s < stage.duration_s - end_tolerance )
+            {
+                observer.onSnapshot( progress, hostSnapshot( sim ) );
+                while ( next_snapshot <= progress.stage_time_s + end_tolerance )
+                    next_snapshot += stage.snapshot_interval_s;
+            }
+
+            if ( quasi_static )
+            {
+                ke_max = std::max( ke_max, progress.kinetic_energy_j );
+                stage_summary.ke_ratio =
+                    ke_max > 0.0 ? progress.kinetic_energy_j / ke_max : 0.0;
+                if ( progress.stage_step >= min_quasi_static_steps &&
+                     stage_summary.ke_ratio < stage.ke_ratio_tolerance )
+                {
+                    stage_summary.converged = true;
+                    break;
+                }
+            }
+        }
+
+        stage_summary.steps = progress.stage_step;
+        stage_summary.duration_s = progress.stage_time_s;
+        observer.onSnapshot( progress, hostSnapshot( sim ) );
+        if ( stage.reset_displacement )
+            sim.resetDisplacement();
+        observer.onStageEnd( progress, stage_summary );
+        summary.steps += stage_summary.steps;
+        summary.dt_min_s = std::min( summary.dt_min_s, stage_summary.dt_min_s );
+        summary.dt_max_s = std::max( summary.dt_max_s, stage_summary.dt_max_s );
+        summary.stages.push_back( stage_summary );
+        if ( summary.interrupted )
+            break;
+    }
+    return summary;
+}
+
+} // namespace mpm
+
+#endif // MPM_RUN_STAGES_HPP

@@ -1,0 +1,184 @@
+#include <mpm_test_backends.hpp>
+#include <mpm_test_fixtures.hpp>
+
+#include <mpm_g2p.hpp>
+#include <mpm_grid_update.hpp>
+#include <mpm_p2g.hpp>
+#include <mpm_stress_update.hpp>
+#include <mpm_velocity_gradient.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_Random.hpp>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+template <class ExecSpace>
+class Transfer : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( Transfer, mpm_test::Backends, mpm_test::BackendName );
+
+//---------------------------------------------------------------------------//
+// P2G then sum over nodes conserves mass and momentum to round-off.
+TYPED_TEST( Transfer, p2g_conserves_mass_and_momentum )
+{
+    using exec_space = TypeParam;
+    const auto grid = mpm_test::makeGrid( 17, 13, 0.25 );
+    const int num_p = 5000;
+    mpm::ParticleViews<exec_space> pv( num_p );
+    Kokkos::Random_XorShift64_Pool<exec_space> pool( 12345 );
+    Kokkos::fill_random( pv.x_p, pool, 0.0, 3.2 ); // inside 4.25 x 3.25
+    Kokkos::fill_random( pv.v_p, pool, -2.0, 3.0 );
+    Kokkos::fill_random( pv.m_p, pool, 0.5, 1.5 );
+    Kokkos::deep_copy( pv.vol_p, 0.01 );
+    Kokkos::deep_copy( pv.status_p, mpm::point_active );
+    mpm::GridViews<exec_space> gv( grid );
+
+    mpm::p2gMassMomentumForce( exec_space(), pv, gv, 0.0, -9.81 );
+
+    double m_p_sum = 0.0, px_p_sum = 0.0, py_p_sum = 0.0;
+    Kokkos::parallel_reduce(
+        Kokkos::RangePolicy<exec_space>( 0, num_p ),
+        KOKKOS_LAMBDA( const int p, double& m, double& px, double& py ) {
+            m += pv.m_p( p );
+            px += pv.m_p( p ) * pv.v_p( p, 0 );
+            py += pv.m_p( p ) * pv.v_p( p, 1 );
+        },
+        m_p_sum, px_p_sum, py_p_sum );
+    const auto m_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.m_i );
+    const auto p_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.p_i );
+    const auto f_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
+    double m_sum = 0.0, px_sum = 0.0, py_sum = 0.0, fy_sum = 0.0;
+    for ( int i = 0; i <= grid.nx; ++i )
+        for ( int j = 0; j <= grid.ny; ++j )
+        {
+            m_sum += m_i( i, j );
+            px_sum += p_i( i, j, 0 );
+            py_sum += p_i( i, j, 1 );
+            fy_sum += f_i( i, j, 1 );
+        }
+    EXPECT_NEAR( m_sum, m_p_sum, 1e-12 * m_p_sum );
+    EXPECT_NEAR( px_sum, px_p_sum, 1e-12 * std::abs( m_p_sum ) * 3.0 );
+    EXPECT_NEAR( py_sum, py_p_sum, 1e-12 * std::abs( m_p_sum ) * 3.0 );
+    // Zero stress: the nodal forces are the weight.
+    EXPECT_NEAR( fy_sum, -9.81 * m_p_sum, 1e-12 * 9.81 * m_p_sum );
+}
+
+//---------------------------------------------------------------------------//
+// A linear nodal velocity field is interpolated exactly (PIC) and its
+// gradient is recovered exactly at every point.
+TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
+{
+    using exec_space = TypeParam;
+    const auto grid = mpm_test::makeGrid( 6, 5, 0.5 );
+    auto pv = mpm_test::gaussPoints<exec_space>( grid, 1, 5, 1, 4, 2000.0 );
+    mpm::GridViews<exec_space> gv( grid );
+    // v(x) = a + B x
+    const double a[2] = { 0.3, -0.7 };
+    const double B[2][2] = { { 0.11, -0.23 }, { 0.05, 0.17 } };
+    auto v_h = Kokkos::create_mirror( gv.v_i );
+    for ( int i = 0; i <= grid.nx; ++i )
+        for ( int j = 0; j <= grid.ny; ++j )
+            for ( int d = 0; d < 2; ++d )
+                v_h( i, j, d ) = a[d] + B[d][0] * grid.nodeX( i ) +
+                                 B[d][1] * grid.nodeY( j );
+    Kokkos::deep_copy( gv.v_i, v_h );
+    Kokkos::deep_copy( gv.dv_i, 0.0 );
+
+    const double dt = 1.0e-3;
+    mpm::g2pVelocity( exec_space(), pv, gv, dt, 0.0 );
+    mpm::velocityGradient( exec_space(), pv, gv );
+
+    const auto x =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
+    const auto v =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.v_p );
+    const auto du =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.du_p );
+    const auto L =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.grad_v_p );
+    for ( int p = 0; p < pv.size(); ++p )
+        for ( int d = 0; d < 2; ++d )
+        {
+            const double exact =
+                a[d] + B[d][0] * x( p, 0 ) + B[d][1] * x( p, 1 );
+            EXPECT_NEAR( v( p, d ), exact, 1e-14 );
+            EXPECT_NEAR( du( p, d ), dt * exact, 1e-17 );
+            EXPECT_NEAR( L( p, d, 0 ), B[d][0], 1e-13 );
+            EXPECT_NEAR( L( p, d, 1 ), B[d][1], 1e-13 );
+        }
+}
+
+//---------------------------------------------------------------------------//
+// Patch test: a uniform strain increment gives a uniform stress, and a
+// uniform stress gives zero internal force at the interior nodes.
+TYPED_TEST( Transfer, uniform_strain_patch_test )
+{
+    using exec_space = TypeParam;
+    const auto grid = mpm_test::makeGrid( 6, 6, 0.25 );
+    auto pv = mpm_test::gaussPoints<exec_space>( grid, 1, 5, 1, 5, 1800.0 );
+    mpm::GridViews<exec_space> gv( grid );
+    const double B[2][2] = { { 1.0e-3, 4.0e-4 }, { -2.0e-4, -2.0e-3 } };
+    auto v_h = Kokkos::create_mirror( gv.v_i );
+    for ( int i = 0; i <= grid.nx; ++i )
+        for ( int j = 0; j <= grid.ny; ++j )
+            for ( int d = 0; d < 2; ++d )
+                v_h( i, j, d ) =
+                    B[d][0] * grid.nodeX( i ) + B[d][1] * grid.nodeY( j );
+    Kokkos::deep_copy( gv.v_i, v_h );
+
+    mpm::physics::MaterialTable materials;
+    materials.materials[0] = mpm::physics::elasticParams( 1.0e7, 0.3, 1800.0 );
+    materials.size = 1;
+    const double dt = 1.0;
+    mpm::velocityGradient( exec_space(), pv, gv );
+    // Pure strain: remove the spin so the Jaumann term does not enter.
+    mpm::stressUpdate( exec_space(), pv, materials, dt );
+
+    const double K = materials[0].bulk_modulus;
+    const double G = materials[0].shear_modulus;
+    const double de[3] = { B[0][0] * dt, B[1][1] * dt,
+                           0.5 * ( B[0][1] + B[1][0] ) * dt };
+    const double tr = de[0] + de[1];
+    const double expected[4] = { K * tr + 2.0 * G * ( de[0] - tr / 3.0 ),
+                                 K * tr + 2.0 * G * ( de[1] - tr / 3.0 ),
+                                 2.0 * G * de[2],
+                                 K * tr + 2.0 * G * ( -tr / 3.0 ) };
+    const auto s =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.sigma_p );
+    const double scale = std::abs( expected[1] );
+    for ( int p = 0; p < pv.size(); ++p )
+        for ( int c = 0; c < 4; ++c )
+        {
+            // The Jaumann rotation of the zero initial stress is zero.
+            EXPECT_NEAR( s( p, c ), expected[c], 1e-12 * scale )
+                << "p " << p << " c " << c;
+        }
+
+    // Uniform stress: interior nodes feel no internal force.
+    mpm::p2gMassMomentumForce( exec_space(), pv, gv, 0.0, 0.0 );
+    const auto f =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
+    double boundary_force = 0.0;
+    for ( int i = 1; i <= 5; ++i )
+        for ( int j = 1; j <= 5; ++j )
+        {
+            const bool interior = i > 1 && i < 5 && j > 1 && j < 5;
+            if ( interior )
+            {
+                EXPECT_NEAR( f( i, j, 0 ), 0.0, 1e-10 * scale * grid.h );
+                EXPECT_NEAR( f( i, j, 1 ), 0.0, 1e-10 * scale * grid.h );
+            }
+            else
+                boundary_force += std::abs( f( i, j, 1 ) );
+        }
+    // ... while the boundary nodes carry the traction sigma . n.
+    EXPECT_GT( boundary_force, 0.1 * scale * grid.h );
+}
+
+} // namespace

@@ -1,0 +1,69 @@
+#ifndef MPM_PARTICLE_VIEWS_HPP
+#define MPM_PARTICLE_VIEWS_HPP
+
+#include <mpm_device_type.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Material point fields, one View per field (structure of arrays).
+
+  Naming: <quantity>_p (p = point). Vectors are (x, y); stress and strain
+  are (xx, yy, xy, zz) with tensor shear components, tension positive.
+*/
+template <class ExecSpace>
+struct ParticleViews
+{
+    using execution_space = ExecSpace;
+    using memory_space = typename ExecSpace::memory_space;
+    using device_type = DeviceType<ExecSpace>;
+    using scalar_view = Kokkos::View<double*, device_type>;
+    using vector_view = Kokkos::View<double* [2], device_type>;
+    using tensor_view = Kokkos::View<double* [4], device_type>;
+    using gradient_view = Kokkos::View<double* [2][2], device_type>;
+    using int_view = Kokkos::View<int*, device_type>;
+
+    vector_view x_p;         //!< position, m
+    vector_view x0_p;        //!< reference position for displacement, m
+    vector_view v_p;         //!< velocity, m/s
+    vector_view du_p;        //!< displacement increment of the step, m
+    scalar_view m_p;         //!< mass, kg (per metre out of plane)
+    scalar_view vol_p;       //!< current volume, m^3 (per metre)
+    scalar_view vol0_p;      //!< initial volume, m^3 (per metre)
+    tensor_view sigma_p;     //!< Cauchy stress, Pa
+    tensor_view eps_p;       //!< accumulated (logarithmic-rate) strain, -
+    scalar_view eps_p_bar_p; //!< accumulated plastic shear strain invariant
+    gradient_view grad_v_p;  //!< velocity gradient L_ij = dv_i/dx_j, 1/s
+    int_view material_p;     //!< material id
+    int_view id_p;           //!< original index (stable identifier)
+    int_view status_p;       //!< PointStatus
+
+    ParticleViews() = default;
+
+    explicit ParticleViews( const int num_points )
+        : x_p( "x_p", num_points )
+        , x0_p( "x0_p", num_points )
+        , v_p( "v_p", num_points )
+        , du_p( "du_p", num_points )
+        , m_p( "m_p", num_points )
+        , vol_p( "vol_p", num_points )
+        , vol0_p( "vol0_p", num_points )
+        , sigma_p( "sigma_p", num_points )
+        , eps_p( "eps_p", num_points )
+        , eps_p_bar_p( "eps_p_bar_p", num_points )
+        , grad_v_p( "grad_v_p", num_points )
+        , material_p( "material_p", num_points )
+        , id_p( "id_p", num_points )
+        , status_p( "status_p", num_points )
+    {
+    }
+
+    int size() const { return static_cast<int>( x_p.extent( 0 ) ); }
+};
+
+} // namespace mpm
+
+#endif // MPM_PARTICLE_VIEWS_HPP
