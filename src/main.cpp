@@ -9,8 +9,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <thread>
 
 namespace
 {
@@ -67,7 +69,8 @@ int main( int argc, char* argv[] )
     std::string case_file;
     mpm::RunOptions options;
     options.backend = RAINSLIDE_DEFAULT_BACKEND;
-    options.threads = 2;
+    options.threads =
+        std::max( 1, static_cast<int>( std::thread::hardware_concurrency() ) );
     bool quiet = false;
 
     CLI::App* run = app.add_subcommand( "run", "run a case" );

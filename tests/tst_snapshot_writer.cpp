@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
-#include <cctype>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -51,7 +51,7 @@ std::vector<std::string> listDir( const fs::path& dir )
 }
 
 //---------------------------------------------------------------------------//
-// Minimal XML reader: checks well-formedness and builds a tree.
+// Minimal XML tree, enough to check well-formedness and read the XDMF.
 struct XmlNode
 {
     std::string tag;
@@ -60,121 +60,68 @@ struct XmlNode
     std::vector<XmlNode> children;
 };
 
-class XmlReader
+std::string xmlUnescape( std::string t )
 {
-  public:
-    explicit XmlReader( const std::string& s )
-        : _s( s )
-    {
-    }
-    XmlNode document()
-    {
-        skipMisc();
-        XmlNode root = element();
-        skipMisc();
-        if ( _i != _s.size() )
-            fail( "trailing content" );
-        return root;
-    }
+    const char* const entities[][2] = { { "&lt;", "<" },
+                                        { "&gt;", ">" },
+                                        { "&quot;", "\"" },
+                                        { "&apos;", "'" },
+                                        { "&amp;", "&" } };
+    for ( const auto& e : entities )
+        for ( auto p = t.find( e[0] ); p != t.npos; p = t.find( e[0], p + 1 ) )
+            t.replace( p, std::strlen( e[0] ), e[1] );
+    return t;
+}
 
-  private:
-    [[noreturn]] void fail( const std::string& what ) const
+// Tokenizes tags with a regex and matches them on a stack; throws unless
+// `text` is a single well-formed element (after an optional prolog).
+XmlNode parseXml( const std::string& text )
+{
+    static const std::regex tag(
+        R"re(<\?[^>]*\?>|<!DOCTYPE[^>]*>|<!--[\s\S]*?-->|)re"
+        R"re(<(/?)([A-Za-z_][\w:.-]*)((?:\s+[\w:.-]+="[^"<]*")*)\s*(/?)>)re" );
+    static const std::regex attribute( R"re(([\w:.-]+)="([^"]*)")re" );
+    std::vector<XmlNode> stack( 1 ); // stack[0] holds the root when done
+    std::size_t pos = 0;
+    for ( std::sregex_iterator it( text.begin(), text.end(), tag ), end;
+          it != end; ++it )
     {
-        throw std::runtime_error( "XML: " + what + " at offset " +
-                                  std::to_string( _i ) );
-    }
-    bool at( const char* token ) const
-    {
-        return _s.compare( _i, std::strlen( token ), token ) == 0;
-    }
-    void skipWs()
-    {
-        while ( _i < _s.size() && std::isspace( (unsigned char)_s[_i] ) )
-            ++_i;
-    }
-    void skipPast( const char* token )
-    {
-        const auto pos = _s.find( token, _i );
-        if ( pos == std::string::npos )
-            fail( std::string( "missing " ) + token );
-        _i = pos + std::strlen( token );
-    }
-    void skipMisc()
-    {
-        for ( skipWs(); at( "<?" ) || at( "<!" ); skipWs() )
-            skipPast( at( "<?" ) ? "?>" : at( "<!--" ) ? "-->" : ">" );
-    }
-    std::string name()
-    {
-        const std::size_t start = _i;
-        while ( _i < _s.size() &&
-                ( std::isalnum( (unsigned char)_s[_i] ) || _s[_i] == '_' ||
-                  _s[_i] == ':' || _s[_i] == '-' || _s[_i] == '.' ) )
-            ++_i;
-        if ( start == _i )
-            fail( "expected a name" );
-        return _s.substr( start, _i - start );
-    }
-    static std::string unescape( std::string t )
-    {
-        const std::pair<const char*, const char*> entities[] = {
-            { "&lt;", "<" },
-            { "&gt;", ">" },
-            { "&quot;", "\"" },
-            { "&apos;", "'" },
-            { "&amp;", "&" } };
-        for ( const auto& e : entities )
-            for ( auto p = t.find( e.first ); p != std::string::npos;
-                  p = t.find( e.first, p + 1 ) )
-                t.replace( p, std::strlen( e.first ), e.second );
-        return t;
-    }
-    XmlNode element()
-    {
-        if ( !at( "<" ) )
-            fail( "expected '<'" );
-        ++_i;
-        XmlNode node;
-        node.tag = name();
-        for ( skipWs(); !at( "/>" ) && !at( ">" ); skipWs() )
+        const std::smatch& m = *it;
+        const std::string between = text.substr( pos, m.position() - pos );
+        if ( between.find( '<' ) != std::string::npos )
+            throw std::runtime_error( "XML: malformed markup: " + between );
+        stack.back().text += between;
+        pos = m.position() + m.length();
+        if ( m[2].length() == 0 ) // prolog or comment
+            continue;
+        if ( m[1] == "/" )
         {
-            const std::string key = name();
-            skipWs();
-            if ( !at( "=\"" ) )
-                fail( "expected =\"" );
-            _i += 2;
-            const auto end = _s.find( '"', _i );
-            if ( end == std::string::npos || _s.find( '<', _i ) < end )
-                fail( "bad attribute value" );
-            node.attrs[key] = unescape( _s.substr( _i, end - _i ) );
-            _i = end + 1;
+            if ( stack.size() < 2 || stack.back().tag != m[2] )
+                throw std::runtime_error( "XML: unexpected </" + m[2].str() +
+                                          ">" );
+            XmlNode done = std::move( stack.back() );
+            stack.pop_back();
+            done.text = xmlUnescape( done.text );
+            stack.back().children.push_back( std::move( done ) );
+            continue;
         }
-        if ( at( "/>" ) )
-        {
-            _i += 2;
-            return node;
-        }
-        ++_i;
-        while ( !at( "</" ) )
-        {
-            if ( _i >= _s.size() )
-                fail( "unclosed <" + node.tag + ">" );
-            if ( at( "<" ) )
-                node.children.push_back( element() );
-            else
-                node.text += _s[_i++];
-        }
-        _i += 2;
-        if ( name() != node.tag || !at( ">" ) )
-            fail( "mismatched </" + node.tag + ">" );
-        ++_i;
-        node.text = unescape( node.text );
-        return node;
+        XmlNode node{ m[2], {}, "", {} };
+        const std::string attrs = m[3];
+        for ( std::sregex_iterator a( attrs.begin(), attrs.end(), attribute );
+              a != end; ++a )
+            node.attrs[( *a )[1]] = xmlUnescape( ( *a )[2] );
+        if ( m[4] == "/" )
+            stack.back().children.push_back( node );
+        else
+            stack.push_back( node );
     }
-
-    const std::string& _s;
-    std::size_t _i = 0;
-};
+    const bool blank =
+        ( stack[0].text + text.substr( pos ) ).find_first_not_of( " \t\r\n" ) ==
+        std::string::npos;
+    if ( stack.size() != 1 || stack[0].children.size() != 1 || !blank )
+        throw std::runtime_error( "XML: not one well-formed root element" );
+    return stack[0].children[0];
+}
 
 //---------------------------------------------------------------------------//
 // HDF5 read helpers. Reads a whole dataset, its shape and its file type.
@@ -342,7 +289,9 @@ TEST( SnapshotWriter, two_snapshots_round_trip_and_xdmf )
     std::stringstream text;
     text << in.rdbuf();
     XmlNode root;
-    ASSERT_NO_THROW( root = XmlReader( text.str() ).document() );
+    ASSERT_NO_THROW( root = parseXml( text.str() ) );
+    EXPECT_THROW( parseXml( "<a><b></a>" ), std::runtime_error );
+    EXPECT_THROW( parseXml( "<a x=\"1></a>" ), std::runtime_error );
     ASSERT_EQ( root.tag, "Xdmf" );
     const XmlNode& series = root.children.at( 0 ).children.at( 0 );
     EXPECT_EQ( series.attrs.at( "CollectionType" ), "Temporal" );

@@ -4,7 +4,6 @@
 #include <io/mpm_toml_access.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -233,7 +232,8 @@ class CaseParser
             const std::string path = prefix + "[" + std::to_string( k ) + "]";
             TableReader r( *arr.get( k )->as_table(), path, _diag );
             r.checkKeys( { "where", "condition", "polyline_m" },
-                         "[[" + prefix + "]]" );
+                         prefix == "boundaries" ? "[[boundaries]]"
+                                                : "[[stages.boundaries]]" );
             BoundaryConfig bc;
             const auto where = r.choice(
                 "where", { "left", "right", "bottom", "top", "below_polyline" },
@@ -384,10 +384,9 @@ class CaseParser
             }
             if ( !node.is_table() )
             {
-                _diag.mismatch( node, sub_path,
-                                "a table of material parameters "
-                                "[" +
-                                    sub_path + "]" );
+                const std::string expected =
+                    "a table of material parameters [" + sub_path + "]";
+                _diag.mismatch( node, sub_path, expected );
                 continue;
             }
             TableReader r( *node.as_table(), sub_path, _diag );

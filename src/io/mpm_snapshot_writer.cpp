@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <system_error>
 #include <type_traits>
+#include <variant>
 
 static_assert( std::is_same<hid_t, std::int64_t>::value,
                "SnapshotWriter stores hid_t as std::int64_t (HDF5 >= 1.10)" );
@@ -24,20 +25,19 @@ namespace mpm
 namespace
 {
 //---------------------------------------------------------------------------//
-// Collects HDF5's error descriptions, innermost first.
-herr_t collectError( unsigned, const H5E_error2_t* err, void* client )
-{
-    if ( err != nullptr && err->desc != nullptr )
-        static_cast<std::vector<std::string>*>( client )->emplace_back(
-            err->desc );
-    return 0;
-}
-
-// " (HDF5: <API-level message>; <innermost message>)" or "".
+// " (HDF5: <API-level message>; <innermost message>)", or "".
 std::string hdf5ErrorDetail()
 {
     std::vector<std::string> msgs;
-    if ( H5Ewalk2( H5E_DEFAULT, H5E_WALK_UPWARD, collectError, &msgs ) < 0 ||
+    const H5E_walk2_t collect = []( unsigned, const H5E_error2_t* err,
+                                    void* out ) -> herr_t
+    {
+        if ( err != nullptr && err->desc != nullptr )
+            static_cast<std::vector<std::string>*>( out )->push_back(
+                err->desc );
+        return 0;
+    };
+    if ( H5Ewalk2( H5E_DEFAULT, H5E_WALK_UPWARD, collect, &msgs ) < 0 ||
          msgs.empty() )
         return "";
     H5Eclear2( H5E_DEFAULT );
@@ -46,139 +46,118 @@ std::string hdf5ErrorDetail()
 }
 
 //---------------------------------------------------------------------------//
-// Turns HDF5's automatic error printing off for one scope.
-class SilenceHdf5Errors
+// Checked HDF5 calls on one file, with HDF5's own error printing off for
+// the object's lifetime. check() throws a runtime_error naming the file, the
+// object and the operation; open() checks and keeps an id that closeAll()
+// closes (checked) and the destructor (error path) closes quietly.
+class Hdf5Ops
 {
   public:
-    SilenceHdf5Errors()
-        : _saved( H5Eget_auto2( H5E_DEFAULT, &_func, &_data ) >= 0 )
+    explicit Hdf5Ops( const std::string& file )
+        : _file( file )
+        , _saved( H5Eget_auto2( H5E_DEFAULT, &_func, &_data ) >= 0 )
     {
         H5Eset_auto2( H5E_DEFAULT, nullptr, nullptr );
     }
-    ~SilenceHdf5Errors()
+    ~Hdf5Ops()
     {
+        for ( auto it = _ids.rbegin(); it != _ids.rend(); ++it )
+            it->closer( it->id );
         if ( _saved )
             H5Eset_auto2( H5E_DEFAULT, _func, _data );
     }
+    template <class T>
+    T check( const T status, const char* operation,
+             const std::string& object ) const
+    {
+        if ( status < 0 )
+            throw std::runtime_error(
+                "mpm::SnapshotWriter: " + std::string( operation ) +
+                " failed for '" + object + "' in file '" + _file + "'" +
+                hdf5ErrorDetail() );
+        return status;
+    }
+    hid_t open( const hid_t id, const char* operation,
+                herr_t ( *closer )( hid_t ), const std::string& object )
+    {
+        _ids.push_back( { check( id, operation, object ), closer, object } );
+        return id;
+    }
+    void closeAll()
+    {
+        while ( !_ids.empty() )
+        {
+            const OpenId last = _ids.back();
+            _ids.pop_back();
+            check( last.closer( last.id ), "close", last.object );
+        }
+    }
 
   private:
+    struct OpenId
+    {
+        hid_t id;
+        herr_t ( *closer )( hid_t );
+        std::string object;
+    };
+    std::string _file;
+    std::vector<OpenId> _ids;
     H5E_auto2_t _func = nullptr;
     void* _data = nullptr;
     bool _saved;
 };
 
 //---------------------------------------------------------------------------//
-// Checks an HDF5 return value; the message names file, object, operation.
-struct Hdf5Check
-{
-    std::string file;
-
-    template <class T>
-    T operator()( const T status, const char* operation,
-                  const std::string& object ) const
-    {
-        if ( status < 0 )
-            throw std::runtime_error(
-                "mpm::SnapshotWriter: " + std::string( operation ) +
-                " failed for '" + object + "' in file '" + file + "'" +
-                hdf5ErrorDetail() );
-        return status;
-    }
-};
-
-//---------------------------------------------------------------------------//
-// Owns one hid_t: the opening call and close() are checked; the destructor
-// (error path only) closes silently.
-class Handle
-{
-  public:
-    Handle( const Hdf5Check& check, const hid_t id, const char* operation,
-            herr_t ( *closer )( hid_t ), std::string object )
-        : _check( check )
-        , _id( check( id, operation, object ) )
-        , _closer( closer )
-        , _object( std::move( object ) )
-    {
-    }
-    ~Handle()
-    {
-        if ( _id >= 0 )
-            _closer( _id );
-    }
-    Handle( const Handle& ) = delete;
-    Handle& operator=( const Handle& ) = delete;
-
-    hid_t get() const { return _id; }
-    void close()
-    {
-        const hid_t id = _id;
-        _id = -1;
-        _check( _closer( id ), "close", _object );
-    }
-
-  private:
-    const Hdf5Check& _check;
-    hid_t _id;
-    herr_t ( *_closer )( hid_t );
-    std::string _object;
-};
-
-//---------------------------------------------------------------------------//
-void writeAttribute( const Hdf5Check& check, const hid_t loc,
+// Scalar attribute `name` on `loc` (`object` is its path, for messages);
+// strings are fixed-length, null-terminated UTF-8.
+using AttributeValue = std::variant<double, std::int64_t, std::string>;
+void writeAttribute( const std::string& file, const hid_t loc,
                      const std::string& object, const char* name,
-                     const hid_t file_type, const hid_t mem_type,
-                     const void* value )
+                     const AttributeValue& value )
 {
-    const std::string where = object + "@" + name;
-    Handle space( check, H5Screate( H5S_SCALAR ), "H5Screate", H5Sclose,
-                  where );
-    Handle attr( check,
-                 H5Acreate2( loc, name, file_type, space.get(), H5P_DEFAULT,
-                             H5P_DEFAULT ),
-                 "H5Acreate2", H5Aclose, where );
-    check( H5Awrite( attr.get(), mem_type, value ), "H5Awrite", where );
-    attr.close();
-    space.close();
-}
-
-// Fixed-length, null-terminated UTF-8 string attribute.
-void writeStringAttribute( const Hdf5Check& check, const hid_t loc,
-                           const std::string& object, const char* name,
-                           const std::string& value )
-{
-    const std::string where = object + "@" + name;
-    Handle type( check, H5Tcopy( H5T_C_S1 ), "H5Tcopy", H5Tclose, where );
-    check( H5Tset_size( type.get(), value.size() + 1 ), "H5Tset_size", where );
-    check( H5Tset_strpad( type.get(), H5T_STR_NULLTERM ), "H5Tset_strpad",
-           where );
-    check( H5Tset_cset( type.get(), H5T_CSET_UTF8 ), "H5Tset_cset", where );
-    writeAttribute( check, loc, object, name, type.get(), type.get(),
-                    value.c_str() );
-    type.close();
+    const std::string at = object + "@" + name;
+    Hdf5Ops h5( file );
+    hid_t type = value.index() == 0 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;
+    const void* data =
+        std::visit( []( const auto& v ) -> const void* { return &v; }, value );
+    if ( const auto* text = std::get_if<std::string>( &value ) )
+    {
+        // H5T_C_S1 is null-terminated; size it and mark it UTF-8.
+        type = h5.open( H5Tcopy( H5T_C_S1 ), "H5Tcopy", H5Tclose, at );
+        h5.check( H5Tset_size( type, text->size() + 1 ), "H5Tset_size", at );
+        h5.check( H5Tset_cset( type, H5T_CSET_UTF8 ), "H5Tset_cset", at );
+        data = text->c_str();
+    }
+    const hid_t space =
+        h5.open( H5Screate( H5S_SCALAR ), "H5Screate", H5Sclose, at );
+    const hid_t attr =
+        h5.open( H5Acreate2( loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT ),
+                 "H5Acreate2", H5Aclose, at );
+    h5.check( H5Awrite( attr, type, data ), "H5Awrite", at );
+    h5.closeAll();
 }
 
 // Dataset [n] (1 component) or [n x components] with a "unit" attribute.
-void writeDataset( const Hdf5Check& check, const hid_t group,
-                   const std::string& path, const std::string& name,
-                   const hid_t file_type, const hid_t mem_type,
-                   const hsize_t n_points, const int components,
+void writeDataset( const std::string& file, const hid_t group,
+                   const std::string& path, const hid_t file_type,
+                   const hid_t mem_type, const hsize_t n, const int components,
                    const void* data, const std::string& unit )
 {
-    const hsize_t dims[2] = { n_points, static_cast<hsize_t>( components ) };
-    Handle space( check,
-                  H5Screate_simple( components == 1 ? 1 : 2, dims, nullptr ),
-                  "H5Screate_simple", H5Sclose, path );
-    Handle dset( check,
-                 H5Dcreate2( group, name.c_str(), file_type, space.get(),
-                             H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT ),
+    Hdf5Ops h5( file );
+    const hsize_t dims[2] = { n, static_cast<hsize_t>( components ) };
+    const hid_t space =
+        h5.open( H5Screate_simple( components == 1 ? 1 : 2, dims, nullptr ),
+                 "H5Screate_simple", H5Sclose, path );
+    const hid_t dset =
+        h5.open( H5Dcreate2( group, path.c_str(), file_type, space, H5P_DEFAULT,
+                             H5P_DEFAULT, H5P_DEFAULT ),
                  "H5Dcreate2", H5Dclose, path );
-    if ( n_points > 0 )
-        check( H5Dwrite( dset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                         data ),
-               "H5Dwrite", path );
-    writeStringAttribute( check, dset.get(), path, "unit", unit );
-    dset.close();
-    space.close();
+    if ( n > 0 )
+        h5.check(
+            H5Dwrite( dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data ),
+            "H5Dwrite", path );
+    writeAttribute( file, dset, path, "unit", unit );
+    h5.closeAll();
 }
 
 //---------------------------------------------------------------------------//
@@ -190,16 +169,14 @@ void checkFields( const int n_points, const std::vector<FieldRef>& fields,
     if ( n_points < 0 )
         throw std::invalid_argument( where + "negative n_points" );
     std::set<std::string> names;
-    bool has_x = false;
     const auto check = [&]( const std::string& name, const bool bad )
     {
-        if ( name.empty() || name == "." || name.find( '/' ) != name.npos ||
-             !names.insert( name ).second || bad )
-            throw std::invalid_argument( where +
-                                         "invalid, duplicate or "
-                                         "empty field '" +
-                                         name + "'" );
+        if ( bad || name.empty() || name == "." ||
+             name.find( '/' ) != name.npos || !names.insert( name ).second )
+            throw std::invalid_argument(
+                where + "invalid, duplicate or empty field '" + name + "'" );
     };
+    bool has_x = false;
     for ( const auto& f : fields )
     {
         check( f.name, f.components < 1 || ( n_points > 0 && !f.data ) );
@@ -208,8 +185,9 @@ void checkFields( const int n_points, const std::vector<FieldRef>& fields,
     for ( const auto& f : int_fields )
         check( f.name, n_points > 0 && !f.data );
     if ( !has_x )
-        throw std::invalid_argument( where + "positions must be a double "
-                                             "field \"x\" with 2 components" );
+        throw std::invalid_argument(
+            where +
+            "positions must be a double field \"x\" with 2 components" );
 }
 
 //---------------------------------------------------------------------------//
@@ -243,7 +221,22 @@ std::string fill( const std::string& text,
     return out + text.substr( i );
 }
 
-// XDMF text of one snapshot and of one field (see fill()).
+// Shortest decimal text that reads back as the same double.
+std::string formatDouble( const double value )
+{
+    char buffer[64];
+    return std::string( buffer,
+                        std::to_chars( buffer, buffer + 64, value ).ptr );
+}
+
+std::string snapshotName( const std::size_t index )
+{
+    char buffer[32];
+    std::snprintf( buffer, sizeof( buffer ), "%06zu", index );
+    return buffer;
+}
+
+// XDMF text of one snapshot and of one node-centred attribute, for fill().
 const char* const grid_xdmf =
     R"(      <Grid Name="snapshot_@name@" GridType="Uniform">
         <Time Value="@time@"/>
@@ -254,7 +247,10 @@ const char* const grid_xdmf =
             <DataItem Dimensions="@n_ids@" NumberType="Int" Precision="4" Format="HDF">@h5@:/vertex_ids</DataItem>
           </DataItem>
         </Topology>
-@fields@        <Attribute Name="stage_time_s" AttributeType="Scalar" Center="Grid">
+        <Geometry GeometryType="XY">
+          <DataItem Dimensions="@n@ 2" NumberType="Float" Precision="8" Format="HDF">@h5@:/snapshots/@name@/x</DataItem>
+        </Geometry>
+@attributes@        <Attribute Name="stage_time_s" AttributeType="Scalar" Center="Grid">
           <DataItem Dimensions="1" NumberType="Float" Precision="8" Format="XML">@stage_time@</DataItem>
         </Attribute>
         <Attribute Name="step" AttributeType="Scalar" Center="Grid">
@@ -262,25 +258,11 @@ const char* const grid_xdmf =
         </Attribute>
       </Grid>
 )";
-const char* const field_xdmf = R"(        <@element@ @kind@>
-          <DataItem Dimensions="@dims@" NumberType="@type@" Format="HDF">@path@</DataItem>
-        </@element@>
+const char* const attribute_xdmf =
+    R"(        <Attribute Name="@field@" AttributeType="@type@" Center="Node">
+          <DataItem Dimensions="@dims@" NumberType="@number@" Format="HDF">@h5@:/snapshots/@name@/@field@</DataItem>
+        </Attribute>
 )";
-
-// Shortest decimal text that reads back as the same double.
-std::string formatDouble( const double value )
-{
-    char buffer[64];
-    const auto end = std::to_chars( buffer, buffer + sizeof( buffer ), value );
-    return std::string( buffer, end.ptr );
-}
-
-std::string snapshotName( const std::size_t index )
-{
-    char buffer[32];
-    std::snprintf( buffer, sizeof( buffer ), "%06zu", index );
-    return buffer;
-}
 
 } // namespace
 
@@ -306,25 +288,21 @@ SnapshotWriter::SnapshotWriter( const std::string& out_dir,
     _xdmf_path = ( fs::path( out_dir ) / ( stem + ".xdmf" ) ).string();
 
     // Create the file with its root attributes and /snapshots.
-    SilenceHdf5Errors silence;
-    const Hdf5Check check{ _partial_path };
-    _file_id = check( H5Fcreate( _partial_path.c_str(), H5F_ACC_TRUNC,
-                                 H5P_DEFAULT, H5P_DEFAULT ),
-                      "H5Fcreate", "/" );
+    Hdf5Ops h5( _partial_path );
+    _file_id = h5.check( H5Fcreate( _partial_path.c_str(), H5F_ACC_TRUNC,
+                                    H5P_DEFAULT, H5P_DEFAULT ),
+                         "H5Fcreate", "/" );
     try
     {
-        writeStringAttribute( check, _file_id, "/", "format",
-                              "rainslide-particles-1" );
-        const std::int64_t zero = 0;
-        writeAttribute( check, _file_id, "/", "snapshot_count", H5T_STD_I64LE,
-                        H5T_NATIVE_INT64, &zero );
-        Handle( check,
-                H5Gcreate2( _file_id, "snapshots", H5P_DEFAULT, H5P_DEFAULT,
-                            H5P_DEFAULT ),
-                "H5Gcreate2", H5Gclose, "/snapshots" )
-            .close();
-
-        check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", "/" );
+        writeAttribute( _partial_path, _file_id, "/", "format",
+                        std::string( "rainslide-particles-1" ) );
+        writeAttribute( _partial_path, _file_id, "/", "snapshot_count",
+                        std::int64_t( 0 ) );
+        h5.open( H5Gcreate2( _file_id, "snapshots", H5P_DEFAULT, H5P_DEFAULT,
+                             H5P_DEFAULT ),
+                 "H5Gcreate2", H5Gclose, "/snapshots" );
+        h5.closeAll();
+        h5.check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", "/" );
     }
     catch ( ... )
     {
@@ -346,9 +324,6 @@ SnapshotWriter::~SnapshotWriter()
         std::cerr << "mpm::SnapshotWriter: finalize failed: " << e.what()
                   << std::endl;
     }
-    catch ( ... )
-    {
-    }
 }
 
 //---------------------------------------------------------------------------//
@@ -363,59 +338,40 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
                                 _partial_path + "' was already finalized" );
     checkFields( n_points, fields, int_fields );
 
-    SilenceHdf5Errors silence;
-    const Hdf5Check check{ _partial_path };
-    SnapshotRecord record{ time_s, stage, stage_time_s, step, n_points, {} };
+    Hdf5Ops h5( _partial_path );
+    const std::string& file = _partial_path;
     const std::string g = "/snapshots/" + snapshotName( _records.size() );
     const auto n = static_cast<hsize_t>( n_points );
     try
     {
-        // Group and its attributes.
-        Handle group( check,
-                      H5Gcreate2( _file_id, g.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                  H5P_DEFAULT ),
-                      "H5Gcreate2", H5Gclose, g );
-        const std::int64_t step64 = step, n64 = n_points;
-        const auto attr = [&]( const char* key, const double* value_f64,
-                               const std::int64_t* value_i64 )
-        {
-            writeAttribute( check, group.get(), g, key,
-                            value_f64 ? H5T_IEEE_F64LE : H5T_STD_I64LE,
-                            value_f64 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64,
-                            value_f64 ? static_cast<const void*>( value_f64 )
-                                      : value_i64 );
-        };
-        attr( "time_s", &time_s, nullptr );
-        writeStringAttribute( check, group.get(), g, "stage", stage );
-        attr( "stage_time_s", &stage_time_s, nullptr );
-        attr( "step", nullptr, &step64 );
-        attr( "n_points", nullptr, &n64 );
-
-        // One dataset per field.
+        // Group, its attributes and one dataset per field.
+        const hid_t group =
+            h5.open( H5Gcreate2( _file_id, g.c_str(), H5P_DEFAULT, H5P_DEFAULT,
+                                 H5P_DEFAULT ),
+                     "H5Gcreate2", H5Gclose, g );
+        writeAttribute( file, group, g, "time_s", time_s );
+        writeAttribute( file, group, g, "stage", stage );
+        writeAttribute( file, group, g, "stage_time_s", stage_time_s );
+        writeAttribute( file, group, g, "step", std::int64_t( step ) );
+        writeAttribute( file, group, g, "n_points", std::int64_t( n_points ) );
         for ( const auto& f : fields )
-        {
-            writeDataset( check, group.get(), g + "/" + f.name, f.name,
-                          H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, f.components,
-                          f.data, f.unit );
-            record.fields.push_back( { f.name, f.components, false } );
-        }
+            writeDataset( file, group, g + "/" + f.name, H5T_IEEE_F64LE,
+                          H5T_NATIVE_DOUBLE, n, f.components, f.data, f.unit );
         for ( const auto& f : int_fields )
-        {
-            writeDataset( check, group.get(), g + "/" + f.name, f.name,
-                          H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, f.data, "1" );
-            record.fields.push_back( { f.name, 1, true } );
-        }
-        group.close();
+            writeDataset( file, group, g + "/" + f.name, H5T_STD_I32LE,
+                          H5T_NATIVE_INT, n, 1, f.data, "1" );
+        h5.closeAll();
         writeVertexIds( n_points );
 
         // Count the snapshot as complete, then flush to disk.
         const std::int64_t count = _records.size() + 1;
-        Handle attr( check, H5Aopen( _file_id, "snapshot_count", H5P_DEFAULT ),
+        const hid_t attr =
+            h5.open( H5Aopen( _file_id, "snapshot_count", H5P_DEFAULT ),
                      "H5Aopen", H5Aclose, "/@snapshot_count" );
-        check( H5Awrite( attr.get(), H5T_NATIVE_INT64, &count ), "H5Awrite",
-               "/@snapshot_count" );
-        attr.close();
-        check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", g );
+        h5.check( H5Awrite( attr, H5T_NATIVE_INT64, &count ), "H5Awrite",
+                  "/@snapshot_count" );
+        h5.closeAll();
+        h5.check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", g );
     }
     catch ( ... )
     {
@@ -424,6 +380,11 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
         H5Eclear2( H5E_DEFAULT );
         throw;
     }
+    SnapshotRecord record{ time_s, stage, stage_time_s, step, n_points, {} };
+    for ( const auto& f : fields )
+        record.fields.push_back( { f.name, f.components, false } );
+    for ( const auto& f : int_fields )
+        record.fields.push_back( { f.name, 1, true } );
     _records.push_back( std::move( record ) );
 }
 
@@ -434,13 +395,14 @@ void SnapshotWriter::writeVertexIds( const long n_points )
     // replaced by a longer one when a snapshot has more points.
     if ( n_points <= _vertex_id_count )
         return;
-    const Hdf5Check check{ _partial_path };
     if ( _vertex_id_count > 0 )
-        check( H5Ldelete( _file_id, "/vertex_ids", H5P_DEFAULT ), "H5Ldelete",
-               "/vertex_ids" );
+        Hdf5Ops( _partial_path )
+            .check( H5Ldelete( _file_id, "/vertex_ids", H5P_DEFAULT ),
+                    "H5Ldelete", "/vertex_ids" );
+    _vertex_id_count = 0;
     std::vector<int> ids( n_points );
     std::iota( ids.begin(), ids.end(), 0 );
-    writeDataset( check, _file_id, "/vertex_ids", "vertex_ids", H5T_STD_I32LE,
+    writeDataset( _partial_path, _file_id, "/vertex_ids", H5T_STD_I32LE,
                   H5T_NATIVE_INT, ids.size(), 1, ids.data(), "1" );
     _vertex_id_count = n_points;
 }
@@ -453,10 +415,7 @@ void SnapshotWriter::finalize()
     _finalized = true;
 
     // Close the file, then publish it under its final name.
-    {
-        SilenceHdf5Errors silence;
-        Hdf5Check{ _partial_path }( H5Fclose( _file_id ), "H5Fclose", "/" );
-    }
+    Hdf5Ops( _partial_path ).check( H5Fclose( _file_id ), "H5Fclose", "/" );
     if ( std::rename( _partial_path.c_str(), _h5_path.c_str() ) != 0 )
     {
         const int error_number = errno;
@@ -485,32 +444,24 @@ std::string SnapshotWriter::buildXdmf() const
         const std::string name = snapshotName( s );
         const std::string n = std::to_string( r.n_points );
 
-        // Geometry first, then one node-centred Attribute per other field.
-        std::string fields;
-        for ( const bool geometry : { true, false } )
-            for ( const FieldRecord& f : r.fields )
-            {
-                if ( ( f.name == "x" ) != geometry )
-                    continue;
-                const std::string type = f.components == 1   ? "Scalar"
-                                         : f.components <= 3 ? "Vector"
-                                                             : "Matrix";
-                fields += fill(
-                    field_xdmf,
-                    { { "element", geometry ? "Geometry" : "Attribute" },
-                      { "kind", geometry ? "GeometryType=\"XY\""
-                                         : "Name=\"" + xmlEscape( f.name ) +
-                                               "\" AttributeType=\"" + type +
-                                               "\" Center=\"Node\"" },
-                      { "dims",
-                        f.components == 1
-                            ? n
-                            : n + " " + std::to_string( f.components ) },
-                      { "type", f.is_int ? "Int\" Precision=\"4"
-                                         : "Float\" Precision=\"8" },
-                      { "path", h5 + ":/snapshots/" + name + "/" +
-                                    xmlEscape( f.name ) } } );
-            }
+        // Every field except the positions "x" (the Geometry) is an Attribute.
+        std::string attributes;
+        for ( const FieldRecord& f : r.fields )
+            if ( f.name != "x" )
+                attributes +=
+                    fill( attribute_xdmf,
+                          { { "field", xmlEscape( f.name ) },
+                            { "type", f.components == 1   ? "Scalar"
+                                      : f.components <= 3 ? "Vector"
+                                                          : "Matrix" },
+                            { "dims",
+                              f.components == 1
+                                  ? n
+                                  : n + " " + std::to_string( f.components ) },
+                            { "number", f.is_int ? "Int\" Precision=\"4"
+                                                 : "Float\" Precision=\"8" },
+                            { "h5", h5 },
+                            { "name", name } } );
         out +=
             fill( grid_xdmf, { { "name", name },
                                { "time", formatDouble( r.time_s ) },
@@ -518,7 +469,7 @@ std::string SnapshotWriter::buildXdmf() const
                                { "n", n },
                                { "n_ids", std::to_string( _vertex_id_count ) },
                                { "h5", h5 },
-                               { "fields", fields },
+                               { "attributes", attributes },
                                { "stage_time", formatDouble( r.stage_time_s ) },
                                { "step", std::to_string( r.step ) } } );
     }

@@ -51,13 +51,18 @@ struct IntFieldRef
 
   While running, the file is `<out_dir>/<stem>.h5.partial`; it is flushed
   after each write(), so a process killed between two write() calls leaves a
-  readable file holding every snapshot written so far. finalize() renames it
-  to `<stem>.h5` and writes `<stem>.xdmf`: a Temporal collection of
-  Polyvertex grids, geometry XY from "x", every other field a node-centred
-  Attribute (1 component: Scalar; 2 or 3: Vector, which ParaView's XDMF
-  readers turn into a 3-component vector with z = 0 for 2 components; any
-  other count: Matrix, read by ParaView as one array with that many
-  components, e.g. sigma with 4).
+  readable file whose first snapshot_count groups are complete (a kill
+  during write() can leave it unreadable: HDF5 has no journal).
+  finalize() renames it to `<stem>.h5` and writes `<stem>.xdmf`, a Temporal
+  collection of Polyvertex grids (one vertex cell per particle, so points
+  render in ParaView's XDMF and Xdmf3 readers alike). Geometry XY is "x";
+  every other field is a node-centred Attribute: 1 component Scalar,
+  2 or 3 Vector (ParaView's "XDMF Reader" pads 2 to 3 with z = 0, the Xdmf3
+  readers keep 2), otherwise Matrix, read as one array with that many
+  components (e.g. a 4-component sigma). stage_time_s and step are
+  grid-centred (field data); stage is an Information element. Checked
+  with ParaView 5.11. A snapshot with 0 points reads as an empty grid
+  (the legacy XDMF reader also logs an error for it).
 
   Errors throw std::runtime_error naming the file, the object and the HDF5
   operation; invalid arguments throw std::invalid_argument.

@@ -150,6 +150,8 @@ shearIncrement( const double e_u[3], const double e_w[3], const double c )
   in c (H <= 0); Newton from c_n converges monotonically (linear, hence one
   step, for a single face). A root below c_r means the step passes
   eps_p_r = (c_r - c0) / H: then c = c_r (H = 0) is solved exactly.
+  Uniqueness needs dr/dc > 0, i.e. |H| small against G (for the main plane
+  A + 2 cos(phi) H 2/3 sqrt(3 + sin^2 psi) > 0); otherwise c_n is kept.
 */
 KOKKOS_INLINE_FUNCTION void
 faceReturn( const MaterialParams& m, const int num_faces, const int faces[2][2],
@@ -201,16 +203,16 @@ faceReturn( const MaterialParams& m, const int num_faces, const int faces[2][2],
     }
 
     // Deviatoric plastic strain e(c) = e_u - c e_w.
+    // Every face has tr(b_k) = 2 sin(psi).
     double e_u[3], e_w[3];
-    const double tr_b[2] = { 2.0 * sin_psi, 2.0 * sin_psi };
     for ( int i = 0; i < 3; ++i )
     {
         e_u[i] = 0.0;
         e_w[i] = 0.0;
         for ( int k = 0; k < num_faces; ++k )
         {
-            e_u[i] += gamma_u[k] * ( b[k][i] - tr_b[k] / 3.0 );
-            e_w[i] += gamma_w[k] * ( b[k][i] - tr_b[k] / 3.0 );
+            e_u[i] += gamma_u[k] * ( b[k][i] - 2.0 * sin_psi / 3.0 );
+            e_w[i] += gamma_w[k] * ( b[k][i] - 2.0 * sin_psi / 3.0 );
         }
     }
 

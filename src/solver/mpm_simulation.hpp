@@ -132,11 +132,10 @@ class Simulation
         if ( bad < 0 )
             return;
         std::ostringstream reason;
-        reason << "is unstable (non-finite value or speed above " << speed_limit
-               << " m/s = " << solver.instability_speed_factor
-               << " x the largest wave speed " << limit.max_wave_speed
-               << " m/s); time step " << dt << " s against the CFL limit "
-               << limit.dt_limit << " s";
+        reason << "is unstable: " << unstableQuantity( bad, speed_limit )
+               << "\n  time step " << dt << " s against the CFL limit "
+               << limit.dt_limit << " s (largest P-wave speed "
+               << limit.max_wave_speed << " m/s)";
         throw SimulationError( describePoint( bad, reason.str() ) );
     }
 
@@ -169,6 +168,31 @@ class Simulation
     }
 
   private:
+    //! Which quantity of point p made it unstable, with its value.
+    std::string unstableQuantity( const int p, const double speed_limit ) const
+    {
+        const auto x = hostCopy( particles.x_p );
+        const auto v = hostCopy( particles.v_p );
+        const auto s = hostCopy( particles.sigma_p );
+        const auto vol = hostCopy( particles.vol_p );
+        std::ostringstream what;
+        const double speed = std::hypot( v( p, 0 ), v( p, 1 ) );
+        if ( !std::isfinite( x( p, 0 ) ) || !std::isfinite( x( p, 1 ) ) )
+            what << "position is not finite";
+        else if ( !std::isfinite( speed ) )
+            what << "velocity is not finite";
+        else if ( speed > speed_limit )
+            what << "speed " << speed << " m/s exceeds " << speed_limit
+                 << " m/s (" << solver.instability_speed_factor
+                 << " x the largest wave speed)";
+        else if ( !( vol( p ) > 0.0 ) || !std::isfinite( vol( p ) ) )
+            what << "volume " << vol( p )
+                 << " m^3/m is not positive and finite";
+        else
+            what << "stress is not finite";
+        return what.str();
+    }
+
     template <class ViewType>
     static auto hostCopy( const ViewType& view )
     {

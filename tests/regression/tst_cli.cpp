@@ -1,0 +1,240 @@
+// End-to-end tests of the rainslide CLI: exit codes, messages, output files.
+#include <hdf5.h>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+struct CommandResult
+{
+    int exit_code;
+    std::string output; //!< stdout and stderr
+};
+
+CommandResult runCommand( const std::string& args )
+{
+    const fs::path log = fs::path( ::testing::TempDir() ) / "rainslide_cli.log";
+    const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
+                                " > " + log.string() + " 2>&1";
+    const int status = std::system( command.c_str() );
+    std::ifstream in( log );
+    std::stringstream text;
+    text << in.rdbuf();
+    return { WEXITSTATUS( status ), text.str() };
+}
+
+fs::path freshDir( const std::string& name )
+{
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / ( "rainslide_" + name );
+    fs::remove_all( dir );
+    fs::create_directories( dir );
+    return dir;
+}
+
+//! A 1 m x 2 m elastic block on a fixed base, with `extra` appended.
+std::string blockCase( const std::string& solver_extra,
+                       const std::string& stage_extra )
+{
+    return R"(
+[case]
+name = "block"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.25
+cells = [8, 12]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+density_kg_per_m3 = 2000.0
+youngs_modulus_pa = 1.0e6
+poisson_ratio = 0.3
+[[bodies]]
+material = "soil"
+polygon_m = [[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]
+[[boundaries]]
+where = "bottom"
+condition = "fixed"
+[solver]
+)" + solver_extra +
+           R"(
+[[stages]]
+name = "load"
+type = "dynamic"
+duration_s = 0.2
+snapshot_interval_s = 0.05
+)" + stage_extra;
+}
+
+fs::path writeCase( const fs::path& dir, const std::string& text )
+{
+    const fs::path file = dir / "case.toml";
+    std::ofstream( file ) << text;
+    return file;
+}
+
+int countSnapshots( const fs::path& h5 )
+{
+    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
+    if ( file < 0 )
+        return -1;
+    const hid_t group = H5Gopen2( file, "/snapshots", H5P_DEFAULT );
+    H5G_info_t info;
+    const herr_t status = H5Gget_info( group, &info );
+    H5Gclose( group );
+    H5Fclose( file );
+    return status < 0 ? -1 : static_cast<int>( info.nlinks );
+}
+
+//---------------------------------------------------------------------------//
+TEST( Cli, run_writes_hdf5_xdmf_and_metrics )
+{
+    const fs::path dir = freshDir( "run" );
+    const fs::path file = writeCase( dir, blockCase( "", "" ) );
+    const auto result =
+        runCommand( "run " + file.string() + " --out " +
+                    ( dir / "out" ).string() + " --backend serial" );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    EXPECT_NE( result.output.find( "MP-updates/s" ), std::string::npos );
+    EXPECT_EQ( countSnapshots( dir / "out" / "particles.h5" ), 4 );
+    EXPECT_TRUE( fs::exists( dir / "out" / "particles.xdmf" ) );
+    EXPECT_FALSE( fs::exists( dir / "out" / "particles.h5.partial" ) );
+    std::ifstream in( dir / "out" / "metrics.json" );
+    const auto metrics = nlohmann::json::parse( in );
+    for ( const char* key : { "steps", "wall_s", "mp_updates_per_s", "backend",
+                              "threads", "n_particles", "n_cells", "dt_s" } )
+        EXPECT_TRUE( metrics.contains( key ) ) << key;
+    EXPECT_EQ( metrics["n_particles"], 4 * 4 * 8 );
+    EXPECT_EQ( metrics["status"], "completed" );
+}
+
+TEST( Cli, bad_case_is_rejected_and_nothing_is_written )
+{
+    const fs::path dir = freshDir( "bad" );
+    std::string text = blockCase( "", "" );
+    text = std::regex_replace( text, std::regex( "poisson_ratio = 0.3" ),
+                               "poisson_ratio = 0.7" );
+    const fs::path file = writeCase( dir, text );
+    const auto result = runCommand( "run " + file.string() + " --out " +
+                                    ( dir / "out" ).string() );
+    EXPECT_EQ( result.exit_code, 2 );
+    EXPECT_NE( result.output.find( file.string() + ":13:" ), std::string::npos )
+        << result.output;
+    EXPECT_NE( result.output.find( "poisson_ratio" ), std::string::npos );
+    EXPECT_NE( result.output.find( "found 0.7" ), std::string::npos );
+    EXPECT_FALSE( fs::exists( dir / "out" ) );
+    // `check` reports the same error.
+    EXPECT_EQ( runCommand( "check " + file.string() ).exit_code, 2 );
+}
+
+TEST( Cli, check_accepts_the_shipped_cases )
+{
+    for ( const auto& entry : fs::directory_iterator( RAINSLIDE_CASES_DIR ) )
+    {
+        if ( entry.path().extension() != ".toml" )
+            continue;
+        const auto result = runCommand( "check " + entry.path().string() );
+        EXPECT_EQ( result.exit_code, 0 ) << result.output;
+    }
+}
+
+TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
+{
+    const fs::path dir = freshDir( "dt" );
+    const fs::path file = writeCase( dir, blockCase( "dt_s = 0.01", "" ) );
+    const auto result =
+        runCommand( "run " + file.string() + " --out " +
+                    ( dir / "out" ).string() + " --backend serial" );
+    EXPECT_EQ( result.exit_code, 1 );
+    EXPECT_NE( result.output.find( "dt_s = 0.01 s exceeds the stable limit" ),
+               std::string::npos )
+        << result.output;
+    EXPECT_FALSE( fs::exists( dir / "out" ) );
+}
+
+TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )
+{
+    const fs::path dir = freshDir( "unstable" );
+    // Any speed above 1e-6 x the wave speed counts as unstable here.
+    const fs::path file =
+        writeCase( dir, blockCase( "instability_speed_factor = 1.0e-6", "" ) );
+    const auto result =
+        runCommand( "run " + file.string() + " --out " +
+                    ( dir / "out" ).string() + " --backend serial" );
+    EXPECT_EQ( result.exit_code, 1 );
+    for ( const char* fragment : { "material point", "is unstable: speed",
+                                   "position (", "at step", "CFL limit" } )
+        EXPECT_NE( result.output.find( fragment ), std::string::npos )
+            << fragment << "\n"
+            << result.output;
+    // The snapshot at the failure was written and the file is readable.
+    EXPECT_EQ( countSnapshots( dir / "out" / "particles.h5" ), 1 );
+    std::ifstream in( dir / "out" / "metrics.json" );
+    EXPECT_EQ( nlohmann::json::parse( in )["status"], "unstable" );
+}
+
+TEST( Cli, point_leaving_the_grid_is_an_error_or_removed )
+{
+    const fs::path dir = freshDir( "leave" );
+    // Sideways gravity pushes the block out through the open right side.
+    const std::string stage = "gravity_m_per_s2 = [400.0, 0.0]\n";
+    std::string text = blockCase( "", "" );
+    text =
+        std::regex_replace( text,
+                            std::regex( "\\[\\[boundaries\\]\\]\nwhere = "
+                                        "\"bottom\"\ncondition = \"fixed\"\n" ),
+                            "" );
+    const fs::path file = writeCase( dir, text + stage );
+    const auto result =
+        runCommand( "run " + file.string() + " --out " +
+                    ( dir / "out" ).string() + " --backend serial" );
+    EXPECT_EQ( result.exit_code, 1 );
+    EXPECT_NE( result.output.find( "left the grid" ), std::string::npos )
+        << result.output;
+
+    const fs::path file_remove = writeCase(
+        dir, blockCase( "remove_points_leaving_grid = true", "" ) + stage );
+    std::string removing = blockCase( "remove_points_leaving_grid = true", "" );
+    removing =
+        std::regex_replace( removing,
+                            std::regex( "\\[\\[boundaries\\]\\]\nwhere = "
+                                        "\"bottom\"\ncondition = \"fixed\"\n" ),
+                            "" );
+    writeCase( dir, removing + stage );
+    const auto removed =
+        runCommand( "run " + file_remove.string() + " --out " +
+                    ( dir / "out2" ).string() + " --backend serial" );
+    EXPECT_EQ( removed.exit_code, 0 ) << removed.output;
+    std::ifstream in( dir / "out2" / "metrics.json" );
+    EXPECT_GT( nlohmann::json::parse( in )["removed_points"].get<int>(), 0 );
+}
+
+//---------------------------------------------------------------------------//
+// The default case runs to completion.
+TEST( Cli, default_dry_slope_runs_to_completion )
+{
+    const fs::path dir = freshDir( "dry_slope" );
+    const auto result = runCommand( "run " RAINSLIDE_CASES_DIR
+                                    "/dry_slope.toml --quiet --out " +
+                                    ( dir / "out" ).string() );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    std::ifstream in( dir / "out" / "metrics.json" );
+    const auto metrics = nlohmann::json::parse( in );
+    EXPECT_EQ( metrics["status"], "completed" );
+    // It is a collapse: material moves by metres.
+    EXPECT_GT( metrics["deformation"]["max_displacement_m"].get<double>(),
+               1.0 );
+}
+
+} // namespace
