@@ -28,8 +28,7 @@ MaterialParams testParams( const double psi_deg = 10.0 )
     m.cohesion_peak = 10.0e3;
     m.cohesion_residual = 2.0e3;
     m.softening_modulus = -250.0e3;
-    m.friction_angle = 30.0 * pi / 180.0;
-    m.dilation_angle = psi_deg * pi / 180.0;
+    m.setAngles( 30.0 * pi / 180.0, psi_deg * pi / 180.0 );
     return m;
 }
 
@@ -261,7 +260,7 @@ TEST( MohrCoulomb, perfect_plasticity_and_tresca_limit_return_to_surface )
     auto flat = testParams();
     flat.cohesion_residual = flat.cohesion_peak; // c0 == c_r
     auto tresca = testParams( 0.0 );
-    tresca.friction_angle = 0.0; // phi = psi = 0
+    tresca.setAngles( 0.0, 0.0 ); // phi = psi = 0
     tresca.cohesion_peak = 40.0e3;
     tresca.softening_modulus = 0.0;
     for ( const auto& m : { perfect, flat, tresca } )

@@ -3,6 +3,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cmath>
+
 namespace mpm
 {
 namespace physics
@@ -29,8 +31,21 @@ struct MaterialParams
     double cohesion_peak = 0.0;     //!< c0, Pa
     double cohesion_residual = 0.0; //!< c_r, Pa
     double softening_modulus = 0.0; //!< H = dc / d(eps_p_bar), Pa (<= 0)
-    double friction_angle = 0.0;    //!< phi, rad
-    double dilation_angle = 0.0;    //!< psi, rad
+    double friction_angle = 0.0;    //!< phi, rad (set with setAngles)
+    double dilation_angle = 0.0;    //!< psi, rad (set with setAngles)
+    double sin_phi = 0.0;           //!< sin(phi), cached for the kernels
+    double cos_phi = 1.0;           //!< cos(phi)
+    double sin_psi = 0.0;           //!< sin(psi)
+
+    //! Friction and dilation angles (rad) with their cached sines/cosines.
+    void setAngles( const double phi, const double psi )
+    {
+        friction_angle = phi;
+        dilation_angle = psi;
+        sin_phi = std::sin( phi );
+        cos_phi = std::cos( phi );
+        sin_psi = std::sin( psi );
+    }
 
     //! Constrained (P-wave) modulus E_c = K + 4/3 G, Pa.
     KOKKOS_INLINE_FUNCTION double constrainedModulus() const

@@ -159,9 +159,9 @@ faceReturn( const MaterialParams& m, const int num_faces, const int faces[2][2],
             double& eps_p_bar )
 {
     namespace KE = Kokkos::Experimental;
-    const double sin_phi = KE::sin( m.friction_angle );
-    const double cos_phi = KE::cos( m.friction_angle );
-    const double sin_psi = KE::sin( m.dilation_angle );
+    const double sin_phi = m.sin_phi;
+    const double cos_phi = m.cos_phi;
+    const double sin_psi = m.sin_psi;
     const double two_g = 2.0 * m.shear_modulus;
     const double lambda = m.bulk_modulus - two_g / 3.0;
 
@@ -268,10 +268,8 @@ KOKKOS_INLINE_FUNCTION double yieldFunction( const MaterialParams& m,
                                              const double eps_p_bar )
 {
     const Impl::PrincipalStress p = Impl::principalStress( s );
-    return Impl::yieldPrincipal(
-        p.sigma, cohesion( m, eps_p_bar ),
-        Kokkos::Experimental::sin( m.friction_angle ),
-        Kokkos::Experimental::cos( m.friction_angle ) );
+    return Impl::yieldPrincipal( p.sigma, cohesion( m, eps_p_bar ), m.sin_phi,
+                                 m.cos_phi );
 }
 
 //---------------------------------------------------------------------------//
@@ -312,9 +310,9 @@ struct MohrCoulomb
                                                    double& eps_p_bar ) const
     {
         namespace KE = Kokkos::Experimental;
-        const double sin_phi = KE::sin( m.friction_angle );
-        const double cos_phi = KE::cos( m.friction_angle );
-        const double sin_psi = KE::sin( m.dilation_angle );
+        const double sin_phi = m.sin_phi;
+        const double cos_phi = m.cos_phi;
+        const double sin_psi = m.sin_psi;
 
         // Trial principal stresses and yield check.
         const Impl::PrincipalStress p = Impl::principalStress( s );

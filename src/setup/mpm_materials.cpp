@@ -26,8 +26,8 @@ makeMaterialTable( const std::vector<MaterialConfig>& materials )
         params.cohesion_peak = m.cohesion_peak_pa;
         params.cohesion_residual = m.cohesion_residual_pa;
         params.softening_modulus = m.softening_modulus_pa;
-        params.friction_angle = m.friction_angle_deg * deg;
-        params.dilation_angle = m.dilation_angle_deg * deg;
+        params.setAngles( m.friction_angle_deg * deg,
+                          m.dilation_angle_deg * deg );
         table.materials[table.size++] = params;
     }
     return table;
