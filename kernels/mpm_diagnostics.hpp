@@ -2,6 +2,7 @@
 #define MPM_DIAGNOSTICS_HPP
 
 #include <mpm_particle_views.hpp>
+#include <mpm_water_views.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
@@ -34,12 +35,13 @@ double kineticEnergy( const ExecSpace& exec_space,
 //---------------------------------------------------------------------------//
 /*!
   \brief Smallest index of an active point whose position, velocity,
-  stress or volume is not finite, or whose speed exceeds `speed_limit`;
+  stress, volume (two-phase: pore pressure, water velocity) is not finite, or whose speed exceeds `speed_limit`;
   -1 if there is none.
 */
 template <class ExecSpace>
 int findUnstablePoint( const ExecSpace& exec_space,
                        const ParticleViews<ExecSpace>& pv,
+                       const WaterParticleViews<ExecSpace>& wv,
                        const double speed_limit )
 {
     namespace KE = Kokkos::Experimental;
@@ -48,6 +50,9 @@ int findUnstablePoint( const ExecSpace& exec_space,
     const auto sigma_p = pv.sigma_p;
     const auto vol_p = pv.vol_p;
     const auto status_p = pv.status_p;
+    const bool two_phase = wv.allocated();
+    const auto p_w_p = wv.p_w_p;
+    const auto v_w_p = wv.v_w_p;
     const int none = pv.size();
     int first = none;
     Kokkos::parallel_reduce(
@@ -59,7 +64,10 @@ int findUnstablePoint( const ExecSpace& exec_space,
             // Any NaN or infinity makes the sum non-finite.
             const double sum = x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) +
                                sigma_p( p, 1 ) + sigma_p( p, 2 ) +
-                               sigma_p( p, 3 ) + vol_p( p );
+                               sigma_p( p, 3 ) + vol_p( p ) +
+                               ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) +
+                                                 v_w_p( p, 1 )
+                                           : 0.0 );
             const double speed2 =
                 v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
             const bool bad = !KE::isfinite( sum ) || !KE::isfinite( speed2 ) ||

@@ -3,11 +3,41 @@
 
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_water_views.hpp>
 
 #include <Kokkos_Core.hpp>
 
 namespace mpm
 {
+//---------------------------------------------------------------------------//
+//! Interpolated nodal velocity sum N v_i and increment sum N dv_i at a point.
+template <class VectorView>
+KOKKOS_INLINE_FUNCTION void
+interpolateVelocity( const int ci, const int cj, const double w[4],
+                     const VectorView& v_i, const VectorView& dv_i,
+                     double v_pic[2], double dv[2] )
+{
+    v_pic[0] = v_pic[1] = dv[0] = dv[1] = 0.0;
+    for ( int k = 0; k < 4; ++k )
+    {
+        const int i = ci + ( k & 1 );
+        const int j = cj + ( k >> 1 );
+        for ( int d = 0; d < 2; ++d )
+        {
+            v_pic[d] += w[k] * v_i( i, j, d );
+            dv[d] += w[k] * dv_i( i, j, d );
+        }
+    }
+}
+
+//! FLIP/PIC blend v <- flip (v + dv) + (1 - flip) v_pic of one component.
+KOKKOS_INLINE_FUNCTION double flipPicBlend( const double flip_fraction,
+                                            const double v, const double dv,
+                                            const double v_pic )
+{
+    return flip_fraction * ( v + dv ) + ( 1.0 - flip_fraction ) * v_pic;
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Grid-to-particle velocity update with a FLIP/PIC blend,
@@ -17,8 +47,7 @@ namespace mpm
   functions at the start-of-step positions).
 */
 template <class ExecSpace>
-void g2pVelocity( const ExecSpace& exec_space,
-                  const ParticleViews<ExecSpace>& pv,
+void g2pVelocity( const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
                   const GridViews<ExecSpace>& gv, const double dt,
                   const double flip_fraction )
 {
@@ -39,24 +68,62 @@ void g2pVelocity( const ExecSpace& exec_space,
             int ci, cj;
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            double v_pic[2] = { 0.0, 0.0 };
-            double dv[2] = { 0.0, 0.0 };
-            for ( int k = 0; k < 4; ++k )
-            {
-                const int i = ci + ( k & 1 );
-                const int j = cj + ( k >> 1 );
-                for ( int d = 0; d < 2; ++d )
-                {
-                    v_pic[d] += w[k] * v_i( i, j, d );
-                    dv[d] += w[k] * dv_i( i, j, d );
-                }
-            }
+            double v_pic[2], dv[2];
+            interpolateVelocity( ci, cj, w, v_i, dv_i, v_pic, dv );
             for ( int d = 0; d < 2; ++d )
             {
-                v_p( p, d ) = flip_fraction * ( v_p( p, d ) + dv[d] ) +
-                              ( 1.0 - flip_fraction ) * v_pic[d];
+                v_p( p, d ) = flipPicBlend( flip_fraction, v_p( p, d ), dv[d],
+                                            v_pic[d] );
                 du_p( p, d ) = dt * v_pic[d];
             }
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Two-phase grid-to-particle update: g2pVelocity for the solid (which
+  also sets du_p) and the same FLIP/PIC blend for the water velocity.
+*/
+template <class ExecSpace>
+void g2pVelocityTwoPhase( const ExecSpace& exec_space,
+                          const ParticleViews<ExecSpace>& pv,
+                          const WaterParticleViews<ExecSpace>& wv,
+                          const GridViews<ExecSpace>& gv,
+                          const WaterGridViews<ExecSpace>& wg, const double dt,
+                          const double flip_fraction )
+{
+    const auto grid = gv.geometry;
+    const auto v_s_i = gv.v_i;
+    const auto dv_s_i = gv.dv_i;
+    const auto v_w_i = wg.v_w_i;
+    const auto dv_w_i = wg.dv_w_i;
+    const auto x_p = pv.x_p;
+    const auto v_s_p = pv.v_p;
+    const auto du_p = pv.du_p;
+    const auto v_w_p = wv.v_w_p;
+    const auto status_p = pv.status_p;
+
+    Kokkos::parallel_for(
+        "mpm::g2p_velocity_two_phase",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p ) {
+            if ( status_p( p ) != point_active )
+                return;
+            int ci, cj;
+            double w[4], dwdx[4], dwdy[4];
+            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+            double v_pic[2], dv[2];
+            interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_pic, dv );
+            for ( int d = 0; d < 2; ++d )
+            {
+                v_s_p( p, d ) = flipPicBlend( flip_fraction, v_s_p( p, d ),
+                                              dv[d], v_pic[d] );
+                du_p( p, d ) = dt * v_pic[d];
+            }
+            interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_pic, dv );
+            for ( int d = 0; d < 2; ++d )
+                v_w_p( p, d ) = flipPicBlend( flip_fraction, v_w_p( p, d ),
+                                              dv[d], v_pic[d] );
         } );
 }
 

@@ -13,15 +13,17 @@ namespace mpm
 /*!
   \brief Particle-to-grid scatter of mass, momentum and force:
   m_i = sum N m_p, p_i = sum N m_p v_p,
-  f_i = sum N m_p g - sum vol_p sigma_p . grad N.
-  Resets the grid fields it writes.
+  f_i = sum N (m_p g + load) - sum vol_p sigma_p . grad N.
+  `load_force(l, d)` is the force (N) on a point of load l; points with
+  load_p < 0 carry none. Resets the grid fields it writes.
 */
 template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type>
+          class Duplication = typename ScatterDuplication<ExecSpace>::type,
+          class LoadView>
 void p2gMassMomentumForce( const ExecSpace& exec_space,
                            const ParticleViews<ExecSpace>& pv,
                            GridViews<ExecSpace>& gv, const double gravity_x,
-                           const double gravity_y )
+                           const double gravity_y, const LoadView& load_force )
 {
     // Reset write views.
     Kokkos::deep_copy( exec_space, gv.m_i, 0.0 );
@@ -39,6 +41,7 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
     const auto vol_p = pv.vol_p;
     const auto sigma_p = pv.sigma_p;
     const auto status_p = pv.status_p;
+    const auto load_p = pv.load_p;
 
     Kokkos::parallel_for(
         "mpm::p2g_mass_momentum_force",
@@ -58,6 +61,9 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
             const double s_xx = sigma_p( p, 0 );
             const double s_yy = sigma_p( p, 1 );
             const double s_xy = sigma_p( p, 2 );
+            const int load = load_p( p );
+            const double f_x = m * gravity_x + ( load >= 0 ? load_force( load, 0 ) : 0.0 );
+            const double f_y = m * gravity_y + ( load >= 0 ? load_force( load, 1 ) : 0.0 );
             for ( int k = 0; k < 4; ++k )
             {
                 const int i = ci + ( k & 1 );
@@ -65,10 +71,10 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
                 m_i( i, j ) += w[k] * m;
                 p_i( i, j, 0 ) += w[k] * m * v_p( p, 0 );
                 p_i( i, j, 1 ) += w[k] * m * v_p( p, 1 );
-                f_i( i, j, 0 ) += w[k] * m * gravity_x -
-                                  vol * ( s_xx * dwdx[k] + s_xy * dwdy[k] );
-                f_i( i, j, 1 ) += w[k] * m * gravity_y -
-                                  vol * ( s_xy * dwdx[k] + s_yy * dwdy[k] );
+                f_i( i, j, 0 ) +=
+                    w[k] * f_x - vol * ( s_xx * dwdx[k] + s_xy * dwdy[k] );
+                f_i( i, j, 1 ) +=
+                    w[k] * f_y - vol * ( s_xy * dwdx[k] + s_yy * dwdy[k] );
             }
         } );
 
@@ -76,6 +82,19 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
     Kokkos::Experimental::contribute( gv.m_i, m_sv );
     Kokkos::Experimental::contribute( gv.p_i, p_sv );
     Kokkos::Experimental::contribute( gv.f_i, f_sv );
+}
+
+//! p2gMassMomentumForce without loads.
+template <class ExecSpace,
+          class Duplication = typename ScatterDuplication<ExecSpace>::type>
+void p2gMassMomentumForce( const ExecSpace& exec_space,
+                           const ParticleViews<ExecSpace>& pv,
+                           GridViews<ExecSpace>& gv, const double gravity_x,
+                           const double gravity_y )
+{
+    p2gMassMomentumForce<ExecSpace, Duplication>(
+        exec_space, pv, gv, gravity_x, gravity_y,
+        LoadForceView<ExecSpace>( "no_loads", 0 ) );
 }
 
 //---------------------------------------------------------------------------//

@@ -2,7 +2,9 @@
 #define MPM_TIMESTEP_HPP
 
 #include <mpm_particle_views.hpp>
+#include <mpm_water_views.hpp>
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_two_phase.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
@@ -44,6 +46,53 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
             const double rho = m_p( p ) / vol_p( p );
             const double c = KE::sqrt(
                 materials[material_p( p )].constrainedModulus() / rho );
+            const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
+                                           v_p( p, 1 ) * v_p( p, 1 ) );
+            const double dt = cell_size / ( c + speed );
+            dt_min = dt < dt_min ? dt : dt_min;
+            c_max = c > c_max ? c : c_max;
+        },
+        Kokkos::Min<double>( limit.dt_limit ),
+        Kokkos::Max<double>( limit.max_wave_speed ) );
+    return limit;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief CFL reduction of a two-phase scene: with the drag implicit the
+  limit is the fastest wave, the undrained mixture wave or the pore-water
+  wave of each point (physics::twoPhaseWaveSpeed), h / (c_p + |v_s|).
+*/
+template <class ExecSpace>
+WaveSpeedLimit criticalTimeStepTwoPhase( const ExecSpace& exec_space,
+                                         const ParticleViews<ExecSpace>& pv,
+                                         const WaterParticleViews<ExecSpace>& wv,
+                                         const physics::MaterialTable& materials,
+                                         const physics::WaterParams& water,
+                                         const double cell_size )
+{
+    namespace KE = Kokkos::Experimental;
+    const auto v_p = pv.v_p;
+    const auto m_p = pv.m_p;
+    const auto vol_p = pv.vol_p;
+    const auto material_p = pv.material_p;
+    const auto status_p = pv.status_p;
+    const auto n_p = wv.n_p;
+    const auto S_p = wv.S_p;
+    const auto dS_dp_p = wv.dS_dp_p;
+    WaveSpeedLimit limit{ 0.0, 0.0 };
+    Kokkos::parallel_reduce(
+        "mpm::critical_time_step_two_phase",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
+            if ( status_p( p ) != point_active )
+                return;
+            const double n = n_p( p );
+            const double S = S_p( p );
+            const double rho_m = m_p( p ) / vol_p( p ) + n * S * water.density;
+            const double c = physics::twoPhaseWaveSpeed(
+                materials[material_p( p )].constrainedModulus(), rho_m,
+                water.density, n, S, dS_dp_p( p ), water.bulk_modulus );
             const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
                                            v_p( p, 1 ) * v_p( p, 1 ) );
             const double dt = cell_size / ( c + speed );

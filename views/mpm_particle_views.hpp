@@ -40,6 +40,7 @@ struct ParticleViews
     int_view material_p;     //!< material id
     int_view id_p;           //!< original index (stable identifier)
     int_view status_p;       //!< PointStatus
+    int_view load_p; //!< index of the load acting on it, -1 if none
 
     ParticleViews() = default;
 
@@ -58,11 +59,17 @@ struct ParticleViews
         , material_p( "material_p", num_points )
         , id_p( "id_p", num_points )
         , status_p( "status_p", num_points )
+        , load_p( "load_p", num_points )
     {
+        Kokkos::deep_copy( load_p, -1 );
     }
 
     int size() const { return static_cast<int>( x_p.extent( 0 ) ); }
 };
+
+//! Force on one point of each load condition, N (per metre out of plane).
+template <class ExecSpace>
+using LoadForceView = Kokkos::View<double* [2], DeviceType<ExecSpace>>;
 
 } // namespace mpm
 

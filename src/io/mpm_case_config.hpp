@@ -21,6 +21,37 @@ enum class ModelType
     MohrCoulomb
 };
 
+//! Which phases a scene models (kernels and fields of the others are
+//! neither run nor allocated).
+enum class AnalysisType
+{
+    Dry,        //!< single phase, total stress (bulk density)
+    Saturated,  //!< solid + water, S = 1, no retention law
+    Unsaturated //!< solid + water with a retention law
+};
+
+//! Soil-water retention / relative permeability law.
+enum class RetentionType
+{
+    Saturated,    //!< S = 1, k_rel = 1
+    VanGenuchten, //!< Eqs. 16-17 with Mualem k_rel (Eq. 19)
+    Liakopoulos,  //!< Eqs. 12-13 (corrected factor 1.9722e-11 Pa^-2.4279)
+    Gardner,      //!< S_e = exp(alpha psi), k_rel = S_e
+    Linear        //!< S linear in suction down to S_res, k_rel = 1
+};
+
+struct RetentionConfig
+{
+    RetentionType model = RetentionType::Saturated;
+    double residual_saturation = 0.0;
+    double saturated_saturation = 1.0;
+    double alpha_per_pa = 0.0; //!< van Genuchten alpha
+    double n = 2.0;            //!< van Genuchten n
+    double alpha_per_m = 0.0;  //!< Gardner alpha (per metre of head)
+    double suction_range_pa = 1.0; //!< Linear: suction where S reaches S_res
+    double k_rel_min = 0.0;        //!< floor on k_rel
+};
+
 //! Constitutive parameters of one named material.
 struct MaterialConfig
 {
@@ -37,6 +68,53 @@ struct MaterialConfig
     double softening_modulus_pa = 0.0;
     double friction_angle_deg = 0.0;
     double dilation_angle_deg = 0.0;
+    // Two-phase scenes only (Saturated / Unsaturated).
+    double solid_density_kg_per_m3 = 0.0; //!< grain density rho_s
+    double porosity = 0.0;                //!< initial porosity n0
+    double permeability_m2 = 0.0;         //!< intrinsic permeability k
+    RetentionConfig retention;
+};
+
+//! Properties of the pore water (two-phase scenes).
+struct WaterConfig
+{
+    double density_kg_per_m3 = 1000.0;
+    double bulk_modulus_pa = 2.2e9;
+    double viscosity_pa_s = 1.0e-3;
+};
+
+//! Piecewise-linear function of stage time: (t_s, value) pairs; constant
+//! beyond the ends; empty means 1.
+using TimeFunction = std::vector<std::array<double, 2>>;
+
+//! Selects material points by their initial position.
+struct PointSelection
+{
+    enum class Kind
+    {
+        Box,         //!< points inside box_m = [[x0, y0], [x1, y1]]
+        SurfaceCells //!< points initially in cells below an empty cell
+    };
+    Kind kind = Kind::Box;
+    std::array<Point2, 2> box_m = { Point2{ 0.0, 0.0 }, Point2{ 0.0, 0.0 } };
+};
+
+//! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t).
+struct PorePressureCondition
+{
+    PointSelection points;
+    double pressure_pa = 0.0;
+    TimeFunction time_function;
+};
+
+//! External force on selected points: traction_pa * length_m shared
+//! equally by the selected points, times f(t).
+struct PointLoad
+{
+    PointSelection points;
+    Point2 traction_pa = { 0.0, 0.0 };
+    double length_m = 1.0;
+    TimeFunction time_function;
 };
 
 //! A polygon of material (vertices in metres, either orientation).
@@ -45,6 +123,9 @@ struct BodyConfig
     std::string material;
     int material_id = 0; //!< index into CaseConfig::materials
     std::vector<Point2> polygon_m;
+    //! Two-phase: initial pore pressure p_w = a + b * y (Pa, y in m).
+    double initial_pore_pressure_pa = 0.0;
+    double initial_pore_pressure_gradient_pa_per_m = 0.0;
 };
 
 //! What a boundary condition prescribes on the selected nodes.
@@ -65,10 +146,21 @@ enum class BoundarySelector
     BelowPolyline //!< nodes on or below a polyline y(x) (e.g. a bedrock line)
 };
 
+//! What a boundary prescribes for the pore water (two-phase scenes).
+enum class HydraulicCondition
+{
+    Impermeable, //!< water normal velocity = solid normal velocity (default)
+    Drained      //!< water leaves/enters freely (p_w = 0 in the weak sense)
+};
+
 struct BoundaryConfig
 {
     BoundarySelector where = BoundarySelector::Bottom;
     BoundaryCondition condition = BoundaryCondition::Fixed;
+    //! Only for two-phase scenes; grid edges are impermeable by default.
+    HydraulicCondition hydraulic = HydraulicCondition::Impermeable;
+    //! False for a purely hydraulic boundary (no solid constraint).
+    bool constrains_solid = true;
     //! Only for BelowPolyline: vertices with strictly increasing x, metres.
     std::vector<Point2> polyline_m;
 };
@@ -98,6 +190,10 @@ struct StageConfig
     bool reset_displacement = false;
     std::vector<MaterialConfig> materials;
     std::vector<BoundaryConfig> boundaries;
+    //! Prescribed point pore pressures active in this stage.
+    std::vector<PorePressureCondition> pore_pressures;
+    //! Loads active in this stage.
+    std::vector<PointLoad> loads;
 };
 
 struct GridConfig
@@ -128,6 +224,8 @@ struct CaseConfig
     std::string file; //!< path of the case file it was read from
     std::string name;
     std::string description;
+    AnalysisType analysis = AnalysisType::Dry;
+    WaterConfig water;
     GridConfig grid;
     int points_per_cell_per_direction = 2;
     std::vector<MaterialConfig> materials;

@@ -1,6 +1,8 @@
 #ifndef MPM_MATERIAL_PARAMS_HPP
 #define MPM_MATERIAL_PARAMS_HPP
 
+#include <physics/mpm_retention_params.hpp>
+
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
@@ -36,6 +38,9 @@ struct MaterialParams
     double sin_phi = 0.0;           //!< sin(phi), cached for the kernels
     double cos_phi = 1.0;           //!< cos(phi)
     double sin_psi = 0.0;           //!< sin(psi)
+    // Two-phase scenes only.
+    double permeability = 0.0; //!< intrinsic permeability k, m^2
+    RetentionParams retention; //!< S(p_w), k_rel(S)
 
     //! Friction and dilation angles (rad) with their cached sines/cosines.
     void setAngles( const double phi, const double psi )
@@ -66,6 +71,14 @@ inline MaterialParams elasticParams( const double youngs_modulus,
     params.shear_modulus = youngs_modulus / ( 2.0 * ( 1.0 + poisson_ratio ) );
     return params;
 }
+
+//! Pore-water constants (two-phase scenes), SI.
+struct WaterParams
+{
+    double density = 1000.0;      //!< rho_w, kg/m^3
+    double bulk_modulus = 2.2e9;  //!< K_w, Pa
+    double viscosity = 1.0e-3;    //!< mu_w, Pa s
+};
 
 //! Fixed-capacity table of materials, indexed by a point's material id.
 struct MaterialTable

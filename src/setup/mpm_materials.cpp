@@ -5,6 +5,39 @@
 
 namespace mpm
 {
+physics::RetentionParams retentionParams( const RetentionConfig& config,
+                                          const double water_unit_weight )
+{
+    physics::RetentionParams r;
+    switch ( config.model )
+    {
+    case RetentionType::Saturated:
+        r.model = physics::RetentionModel::Saturated;
+        break;
+    case RetentionType::VanGenuchten:
+        r.model = physics::RetentionModel::VanGenuchten;
+        break;
+    case RetentionType::Liakopoulos:
+        r.model = physics::RetentionModel::Liakopoulos;
+        break;
+    case RetentionType::Gardner:
+        r.model = physics::RetentionModel::Gardner;
+        break;
+    case RetentionType::Linear:
+        r.model = physics::RetentionModel::Linear;
+        break;
+    }
+    r.s_res = config.residual_saturation;
+    r.s_sat = config.saturated_saturation;
+    r.alpha_per_pa = config.alpha_per_pa;
+    r.n_vg = config.n;
+    r.alpha_per_m = config.alpha_per_m;
+    r.rho_w_g = water_unit_weight;
+    r.suction_range_pa = config.suction_range_pa;
+    r.k_rel_min = config.k_rel_min;
+    return r;
+}
+
 physics::MaterialTable
 makeMaterialTable( const std::vector<MaterialConfig>& materials )
 {
@@ -28,6 +61,8 @@ makeMaterialTable( const std::vector<MaterialConfig>& materials )
         params.softening_modulus = m.softening_modulus_pa;
         params.setAngles( m.friction_angle_deg * deg,
                           m.dilation_angle_deg * deg );
+        params.permeability = m.permeability_m2;
+        params.retention = retentionParams( m.retention );
         table.materials[table.size++] = params;
     }
     return table;

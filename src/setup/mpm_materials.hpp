@@ -8,6 +8,11 @@
 
 namespace mpm
 {
+//! Kernel-side retention parameters (SI); water_unit_weight = rho_w g
+//! converts pressure to head for Gardner's law.
+physics::RetentionParams retentionParams( const RetentionConfig& config,
+                                          double water_unit_weight = 9810.0 );
+
 //! Kernel-side material table (SI, radians) from the case's materials.
 physics::MaterialTable
 makeMaterialTable( const std::vector<MaterialConfig>& materials );

@@ -64,14 +64,16 @@ InitialPoints generatePoints( const CaseConfig& config )
                 {
                     const Point2 p = { grid.origin_m[0] + ( ci + xi[a] ) * h,
                                        grid.origin_m[1] + ( cj + xi[b] ) * h };
-                    for ( const BodyConfig& body : config.bodies )
+                    for ( std::size_t body_id = 0; body_id < config.bodies.size(); ++body_id )
                     {
+                        const BodyConfig& body = config.bodies[body_id];
                         if ( !geometry::pointInPolygon( body.polygon_m, p ) )
                             continue;
                         points.x.push_back( p[0] );
                         points.x.push_back( p[1] );
                         points.vol.push_back( vol );
                         points.material.push_back( body.material_id );
+                        points.body.push_back( static_cast<int>( body_id ) );
                         break;
                     }
                 }
@@ -90,6 +92,8 @@ std::vector<int> nodeFlags( const GridConfig& grid,
     std::vector<int> flags( nx1 * ny1, node_free );
     for ( const BoundaryConfig& bc : boundaries )
     {
+        if ( !bc.constrains_solid )
+            continue;
         const int flag = flagOf( bc.condition );
         for ( int i = 0; i < nx1; ++i )
             for ( int j = 0; j < ny1; ++j )

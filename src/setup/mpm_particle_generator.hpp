@@ -13,6 +13,7 @@ struct InitialPoints
     std::vector<double> x;   //!< 2 per point, m
     std::vector<double> vol; //!< m^3 per metre out of plane
     std::vector<int> material;
+    std::vector<int> body; //!< index into CaseConfig::bodies
     int size() const { return static_cast<int>( vol.size() ); }
 };
 

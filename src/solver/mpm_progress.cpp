@@ -107,7 +107,7 @@ void ProgressPrinter::summary( const nlohmann::json& metrics ) const
 void writeSnapshot( SnapshotWriter& writer, const RunProgress& progress,
                     const HostSnapshot& snap )
 {
-    const std::vector<FieldRef> fields = {
+    std::vector<FieldRef> fields = {
         { "x", snap.x.data(), 2, "m" },
         { "displacement", snap.displacement.data(), 2, "m" },
         { "velocity", snap.v.data(), 2, "m/s" },
@@ -116,6 +116,15 @@ void writeSnapshot( SnapshotWriter& writer, const RunProgress& progress,
         { "plastic_shear_strain", snap.eps_p_bar.data(), 1, "-" },
         { "volume", snap.vol.data(), 1, "m^3/m" },
         { "mass", snap.mass.data(), 1, "kg/m" } };
+    if ( !snap.p_w.empty() )
+    {
+        fields.push_back( { "pore_pressure", snap.p_w.data(), 1, "Pa" } );
+        fields.push_back( { "saturation", snap.S.data(), 1, "-" } );
+        fields.push_back( { "porosity", snap.n.data(), 1, "-" } );
+        fields.push_back( { "water_velocity", snap.v_w.data(), 2, "m/s" } );
+        fields.push_back(
+            { "relative_permeability", snap.k_rel.data(), 1, "-" } );
+    }
     const std::vector<IntFieldRef> int_fields = {
         { "material", snap.material.data() },
         { "id", snap.id.data() },

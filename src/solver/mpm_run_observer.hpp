@@ -41,6 +41,8 @@ struct HostSnapshot
     int num_points = 0;
     std::vector<double> x, displacement, v, sigma, eps, eps_p_bar, vol, mass;
     std::vector<int> material, id, status;
+    //! Two-phase scenes only (empty otherwise).
+    std::vector<double> p_w, S, n, v_w, k_rel;
 };
 
 //! Receives progress, snapshots and stage ends of a run.

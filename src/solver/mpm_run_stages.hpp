@@ -47,6 +47,15 @@ HostSnapshot hostSnapshot( const Simulation<ExecSpace>& sim )
     copy( pv.material_p, snap.material );
     copy( pv.id_p, snap.id );
     copy( pv.status_p, snap.status );
+    if ( sim.twoPhase() )
+    {
+        const auto& wv = sim.water_particles;
+        copy( wv.p_w_p, snap.p_w );
+        copy( wv.S_p, snap.S );
+        copy( wv.n_p, snap.n );
+        copy( wv.v_w_p, snap.v_w );
+        copy( wv.k_rel_p, snap.k_rel );
+    }
     std::vector<double> x0;
     copy( pv.x0_p, x0 );
     snap.displacement.resize( x0.size() );
@@ -126,7 +135,7 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             const WaveSpeedLimit limit = sim.waveSpeedLimit();
             double dt = chooseTimeStep( sim.solver, limit );
             dt = std::min( dt, stage.duration_s - progress.stage_time_s );
-            sim.advance( dt, settings );
+            sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
 
             progress.step = sim.step;

@@ -5,20 +5,23 @@
 #include <mpm_diagnostics.hpp>
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
+#include <mpm_grid_update_two_phase.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_p2g.hpp>
+#include <mpm_p2g_two_phase.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_pore_pressure.hpp>
 #include <mpm_position_update.hpp>
 #include <mpm_stress_update.hpp>
 #include <mpm_timestep.hpp>
 #include <mpm_velocity_gradient.hpp>
-#include <setup/mpm_materials.hpp>
-#include <setup/mpm_particle_generator.hpp>
+#include <mpm_water_views.hpp>
+#include <solver/mpm_diagnosis.hpp>
 #include <solver/mpm_simulation_error.hpp>
+#include <solver/mpm_simulation_setup.hpp>
 
 #include <Kokkos_Core.hpp>
 
-#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -35,7 +38,8 @@ struct StepSettings
 //---------------------------------------------------------------------------//
 /*!
   \brief The state of one simulation (points, grid, materials) and the
-  explicit MUSL step of the dry (single-phase) analysis.
+  explicit MUSL step, dry (single phase) or two-phase (solid + water,
+  formulation.md). Water fields exist only in two-phase scenes.
 */
 template <class ExecSpace>
 class Simulation
@@ -43,19 +47,27 @@ class Simulation
   public:
     using execution_space = ExecSpace;
 
+    AnalysisType analysis = AnalysisType::Dry;
     ParticleViews<ExecSpace> particles;
+    WaterParticleViews<ExecSpace> water_particles; //!< two-phase only
     GridViews<ExecSpace> grid;
+    WaterGridViews<ExecSpace> water_grid; //!< two-phase only
+    StageConditions<ExecSpace> conditions;
     physics::MaterialTable materials;
+    physics::WaterParams water;
     SolverConfig solver;
+    GridConfig grid_config;
     double time = 0.0;   //!< simulated time since the start of the run, s
     long step = 0;       //!< steps taken since the start of the run
     int num_removed = 0; //!< points removed after leaving the grid
 
     //! Generates the points of `config` and applies its first stage.
     explicit Simulation( const CaseConfig& config )
-        : particles( 0 )
+        : analysis( config.analysis )
         , grid( gridGeometry( config.grid ) )
+        , water( waterParams( config.water ) )
         , solver( config.solver )
+        , grid_config( config.grid )
     {
         const InitialPoints points = generatePoints( config );
         if ( points.size() == 0 )
@@ -63,61 +75,62 @@ class Simulation
                                    ": no material point lies inside any body "
                                    "polygon; check bodies[].polygon_m" );
         particles = ParticleViews<ExecSpace>( points.size() );
-        initialiseParticles( points, makeMaterialTable( config.materials ) );
+        if ( twoPhase() )
+        {
+            water_particles = WaterParticleViews<ExecSpace>( points.size() );
+            water_grid = WaterGridViews<ExecSpace>( grid.geometry );
+        }
+        initialiseParticles( config, points, particles, water_particles, water );
         if ( !config.stages.empty() )
             applyStage( config.stages.front() );
     }
 
-    //! Materials and boundary flags of a stage.
+    bool twoPhase() const { return analysis != AnalysisType::Dry; }
+
+    //! Materials, boundary flags and point conditions of a stage.
     void applyStage( const StageConfig& stage )
     {
         materials = makeMaterialTable( stage.materials );
-        const std::vector<int> flags =
-            nodeFlags( gridConfig(), stage.boundaries );
-        auto flags_h = Kokkos::create_mirror_view( grid.flags_i );
-        const int ny1 = grid.geometry.ny + 1;
-        for ( int i = 0; i <= grid.geometry.nx; ++i )
-            for ( int j = 0; j < ny1; ++j )
-                flags_h( i, j ) = flags[i * ny1 + j];
-        Kokkos::deep_copy( grid.flags_i, flags_h );
+        copyNodeFlags( nodeFlags( grid_config, stage.boundaries ), grid.flags_i );
+        if ( twoPhase() )
+            copyNodeFlags( waterNodeFlags( grid_config, stage.boundaries ),
+                           water_grid.flags_w_i );
+        conditions.apply( stage, particles, water_particles, grid_config );
     }
 
     //! CFL limit (Courant number 1) and the largest wave speed.
     WaveSpeedLimit waveSpeedLimit() const
     {
+        if ( twoPhase() )
+            return criticalTimeStepTwoPhase( ExecSpace(), particles,
+                                             water_particles, materials, water,
+                                             grid.geometry.h );
         return criticalTimeStep( ExecSpace(), particles, materials,
                                  grid.geometry.h );
     }
 
     /*!
-      \brief One explicit MUSL step of size dt: P2G, grid update, G2P,
-      remap, velocity gradient (B-bar optional), stress update, positions.
-      Throws SimulationError if a point leaves the grid (unless removal
-      is enabled).
+      \brief One explicit MUSL step of size dt at stage time stage_time_s.
+      Throws SimulationError if a point leaves the grid (unless removal is
+      enabled).
     */
-    void advance( const double dt, const StepSettings& settings )
+    void advance( const double dt, const StepSettings& settings,
+                  const double stage_time_s = 0.0 )
     {
-        const ExecSpace exec;
-        p2gMassMomentumForce( exec, particles, grid, settings.gravity_x,
-                              settings.gravity_y );
-        findActiveNodes( exec, grid );
-        gridUpdateDry( exec, grid, dt, settings.damping );
-        g2pVelocity( exec, particles, grid, dt, solver.flip_fraction );
-        p2gMomentum( exec, particles, grid );
-        remapVelocity( exec, grid );
-        velocityGradient( exec, particles, grid );
-        if ( solver.bbar )
-            cellAverageVolumetricRate( exec, particles, grid );
-        stressUpdate( exec, particles, materials, dt );
+        conditions.update( stage_time_s + dt );
+        if ( twoPhase() )
+            advanceTwoPhase( dt, settings );
+        else
+            advanceDry( dt, settings );
         int removed = 0;
         const int outside =
-            updatePositions( exec, particles, grid.geometry,
+            updatePositions( ExecSpace(), particles, grid.geometry,
                              solver.remove_points_leaving_grid, removed );
         num_removed += removed;
         time += dt;
         ++step;
         if ( outside >= 0 )
-            throw SimulationError( describePoint(
+            throw SimulationError( describe(
                 outside, "left the grid (set solver.remove_points_leaving_grid "
                          "= true to remove such points instead)" ) );
     }
@@ -127,16 +140,18 @@ class Simulation
     {
         const double speed_limit =
             solver.instability_speed_factor * limit.max_wave_speed;
-        const int bad =
-            findUnstablePoint( ExecSpace(), particles, speed_limit );
+        const int bad = findUnstablePoint( ExecSpace(), particles,
+                                           water_particles, speed_limit );
         if ( bad < 0 )
             return;
         std::ostringstream reason;
-        reason << "is unstable: " << unstableQuantity( bad, speed_limit )
+        reason << "is unstable: "
+               << unstableQuantity( particles, water_particles, bad, speed_limit,
+                                    solver.instability_speed_factor )
                << "\n  time step " << dt << " s against the CFL limit "
-               << limit.dt_limit << " s (largest P-wave speed "
+               << limit.dt_limit << " s (largest wave speed "
                << limit.max_wave_speed << " m/s)";
-        throw SimulationError( describePoint( bad, reason.str() ) );
+        throw SimulationError( describe( bad, reason.str() ) );
     }
 
     //! Sets the reference positions to the current ones (x0 = x).
@@ -148,104 +163,67 @@ class Simulation
     //! Number of points still simulated.
     int numActivePoints() const { return particles.size() - num_removed; }
 
-    //! Diagnosis of one point: id, position, velocity, stress, step, time.
-    std::string describePoint( const int p, const std::string& what ) const
+    //! Diagnosis of one point.
+    std::string describe( const int p, const std::string& what ) const
     {
-        const auto x = hostCopy( particles.x_p );
-        const auto v = hostCopy( particles.v_p );
-        const auto s = hostCopy( particles.sigma_p );
-        const auto vol = hostCopy( particles.vol_p );
-        const auto id = hostCopy( particles.id_p );
-        std::ostringstream msg;
-        msg << "material point " << id( p ) << " " << what << "\n"
-            << "  at step " << step << ", t = " << time << " s\n"
-            << "  position (" << x( p, 0 ) << ", " << x( p, 1 ) << ") m\n"
-            << "  velocity (" << v( p, 0 ) << ", " << v( p, 1 ) << ") m/s\n"
-            << "  stress xx, yy, xy, zz (" << s( p, 0 ) << ", " << s( p, 1 )
-            << ", " << s( p, 2 ) << ", " << s( p, 3 ) << ") Pa\n"
-            << "  volume " << vol( p ) << " m^3/m";
-        return msg.str();
+        return describePoint( particles, water_particles, p, what, step, time );
     }
 
   private:
-    //! Which quantity of point p made it unstable, with its value.
-    std::string unstableQuantity( const int p, const double speed_limit ) const
+    //! Single phase: P2G, grid update, G2P, remap, gradient, stress.
+    void advanceDry( const double dt, const StepSettings& settings )
     {
-        const auto x = hostCopy( particles.x_p );
-        const auto v = hostCopy( particles.v_p );
-        const auto s = hostCopy( particles.sigma_p );
-        const auto vol = hostCopy( particles.vol_p );
-        std::ostringstream what;
-        const double speed = std::hypot( v( p, 0 ), v( p, 1 ) );
-        if ( !std::isfinite( x( p, 0 ) ) || !std::isfinite( x( p, 1 ) ) )
-            what << "position is not finite";
-        else if ( !std::isfinite( speed ) )
-            what << "velocity is not finite";
-        else if ( speed > speed_limit )
-            what << "speed " << speed << " m/s exceeds " << speed_limit
-                 << " m/s (" << solver.instability_speed_factor
-                 << " x the largest wave speed)";
-        else if ( !( vol( p ) > 0.0 ) || !std::isfinite( vol( p ) ) )
-            what << "volume " << vol( p )
-                 << " m^3/m is not positive and finite";
-        else
-            what << "stress is not finite";
-        return what.str();
+        const ExecSpace exec;
+        p2gMassMomentumForce( exec, particles, grid, settings.gravity_x,
+                              settings.gravity_y, conditions.load_force );
+        findActiveNodes( exec, grid );
+        gridUpdateDry( exec, grid, dt, settings.damping );
+        g2pVelocity( exec, particles, grid, dt, solver.flip_fraction );
+        p2gMomentum( exec, particles, grid );
+        remapVelocity( exec, grid );
+        velocityGradient( exec, particles, grid );
+        if ( solver.bbar )
+            cellAverageVolumetricRate( exec, particles, grid );
+        stressUpdate( exec, particles, materials, dt );
     }
 
-    template <class ViewType>
-    static auto hostCopy( const ViewType& view )
+    //! Two phases, formulation.md steps 1-9 (drag implicit at the nodes).
+    void advanceTwoPhase( const double dt, const StepSettings& settings )
     {
-        return Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
-    }
-
-    static physics::GridGeometry gridGeometry( const GridConfig& config )
-    {
-        physics::GridGeometry g;
-        g.x0 = config.origin_m[0];
-        g.y0 = config.origin_m[1];
-        g.h = config.cell_size_m;
-        g.nx = config.cells[0];
-        g.ny = config.cells[1];
-        return g;
-    }
-
-    GridConfig gridConfig() const
-    {
-        GridConfig config;
-        config.origin_m = { grid.geometry.x0, grid.geometry.y0 };
-        config.cell_size_m = grid.geometry.h;
-        config.cells = { grid.geometry.nx, grid.geometry.ny };
-        return config;
-    }
-
-    void initialiseParticles( const InitialPoints& points,
-                              const physics::MaterialTable& table )
-    {
-        auto x_h = Kokkos::create_mirror_view( particles.x_p );
-        auto m_h = Kokkos::create_mirror_view( particles.m_p );
-        auto vol_h = Kokkos::create_mirror_view( particles.vol_p );
-        auto material_h = Kokkos::create_mirror_view( particles.material_p );
-        auto id_h = Kokkos::create_mirror_view( particles.id_p );
-        auto status_h = Kokkos::create_mirror_view( particles.status_p );
-        for ( int p = 0; p < points.size(); ++p )
+        const ExecSpace exec;
+        p2gTwoPhase( exec, particles, water_particles, grid, water_grid,
+                     materials, water, settings.gravity_x, settings.gravity_y,
+                     conditions.load_force );
+        findActiveNodes( exec, grid );
+        gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping );
+        g2pVelocityTwoPhase( exec, particles, water_particles, grid, water_grid,
+                             dt, solver.flip_fraction );
+        p2gMomentumTwoPhase( exec, particles, water_particles, grid, water_grid,
+                             water.density );
+        remapVelocityTwoPhase( exec, grid, water_grid );
+        velocityGradientTwoPhase( exec, particles, water_particles, grid,
+                                  water_grid );
+        if ( solver.bbar )
         {
-            x_h( p, 0 ) = points.x[2 * p];
-            x_h( p, 1 ) = points.x[2 * p + 1];
-            vol_h( p ) = points.vol[p];
-            material_h( p ) = points.material[p];
-            m_h( p ) = table[points.material[p]].density * points.vol[p];
-            id_h( p ) = p;
-            status_h( p ) = point_active;
+            cellAverageVolumetricRate( exec, particles, grid );
+            cellAverageWaterDivergence( exec, particles, water_particles, grid,
+                                        water_grid );
         }
-        Kokkos::deep_copy( particles.x_p, x_h );
-        Kokkos::deep_copy( particles.x0_p, x_h );
-        Kokkos::deep_copy( particles.m_p, m_h );
-        Kokkos::deep_copy( particles.vol_p, vol_h );
-        Kokkos::deep_copy( particles.vol0_p, vol_h );
-        Kokkos::deep_copy( particles.material_p, material_h );
-        Kokkos::deep_copy( particles.id_p, id_h );
-        Kokkos::deep_copy( particles.status_p, status_h );
+        porePressureUpdate( exec, particles, water_particles, materials, water,
+                            dt, analysis == AnalysisType::Saturated,
+                            conditions.prescribed_p_w );
+        stressUpdate( exec, particles, materials, dt );
+    }
+
+    void copyNodeFlags( const std::vector<int>& flags,
+                        const typename GridViews<ExecSpace>::int_view& view )
+    {
+        auto flags_h = Kokkos::create_mirror_view( view );
+        const int ny1 = grid.geometry.ny + 1;
+        for ( int i = 0; i <= grid.geometry.nx; ++i )
+            for ( int j = 0; j < ny1; ++j )
+                flags_h( i, j ) = flags[i * ny1 + j];
+        Kokkos::deep_copy( view, flags_h );
     }
 };
 

@@ -1,0 +1,107 @@
+#ifndef MPM_GRID_UPDATE_TWO_PHASE_HPP
+#define MPM_GRID_UPDATE_TWO_PHASE_HPP
+
+#include <mpm_grid_views.hpp>
+#include <mpm_water_views.hpp>
+#include <physics/mpm_nodal_update.hpp>
+#include <physics/mpm_two_phase.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Grid update of the two-phase step on the active nodes: new solid
+  and water velocities with the drag implicit (TwoPhaseNodalUpdate), the
+  solid's boundary flags and the water's impermeability ties.
+*/
+template <class ExecSpace>
+void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+                         WaterGridViews<ExecSpace>& wg, const double dt,
+                         const double damping )
+{
+    const physics::TwoPhaseNodalUpdate update{ dt, damping };
+    const auto m_s_i = gv.m_i;
+    const auto mv_s_i = gv.p_i;
+    const auto f_m_i = gv.f_i;
+    const auto v_s_i = gv.v_i;
+    const auto dv_s_i = gv.dv_i;
+    const auto flags_i = gv.flags_i;
+    const auto m_w_i = wg.m_w_i;
+    const auto mv_w_i = wg.mv_w_i;
+    const auto f_w_i = wg.f_w_i;
+    const auto q_i = wg.q_i;
+    const auto v_w_i = wg.v_w_i;
+    const auto dv_w_i = wg.dv_w_i;
+    const auto flags_w_i = wg.flags_w_i;
+    const auto active_i = gv.active_i;
+    const int ny1 = gv.geometry.ny + 1;
+
+    Kokkos::parallel_for(
+        "mpm::grid_update_two_phase",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int i = active_i( a ) / ny1;
+            const int j = active_i( a ) % ny1;
+            const int flags = flags_i( i, j );
+            const int flags_w = flags_w_i( i, j );
+            for ( int d = 0; d < 2; ++d )
+            {
+                const int bit = d == 0 ? node_fix_x : node_fix_y;
+                const auto r = update( m_s_i( i, j ), m_w_i( i, j ),
+                                       mv_s_i( i, j, d ), mv_w_i( i, j, d ),
+                                       f_m_i( i, j, d ), f_w_i( i, j, d ),
+                                       q_i( i, j ), flags & bit, flags_w & bit );
+                v_s_i( i, j, d ) = r.v_s;
+                dv_s_i( i, j, d ) = r.dv_s;
+                v_w_i( i, j, d ) = r.v_w;
+                dv_w_i( i, j, d ) = r.dv_w;
+            }
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief MUSL: nodal velocities of both phases from the remapped momenta,
+  with the solid's flags and the water ties (v_w = v_s on tied components).
+*/
+template <class ExecSpace>
+void remapVelocityTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+                            WaterGridViews<ExecSpace>& wg )
+{
+    const auto m_s_i = gv.m_i;
+    const auto mv_s_i = gv.p_i;
+    const auto v_s_i = gv.v_i;
+    const auto flags_i = gv.flags_i;
+    const auto m_w_i = wg.m_w_i;
+    const auto mv_w_i = wg.mv_w_i;
+    const auto v_w_i = wg.v_w_i;
+    const auto flags_w_i = wg.flags_w_i;
+    const auto active_i = gv.active_i;
+    const int ny1 = gv.geometry.ny + 1;
+
+    Kokkos::parallel_for(
+        "mpm::remap_velocity_two_phase",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int i = active_i( a ) / ny1;
+            const int j = active_i( a ) % ny1;
+            double v_s[2] = { mv_s_i( i, j, 0 ) / m_s_i( i, j ),
+                              mv_s_i( i, j, 1 ) / m_s_i( i, j ) };
+            physics::applyVelocityBC( flags_i( i, j ), v_s[0], v_s[1] );
+            const bool has_water = m_w_i( i, j ) > 1.0e-12 * m_s_i( i, j );
+            for ( int d = 0; d < 2; ++d )
+            {
+                const int bit = d == 0 ? node_fix_x : node_fix_y;
+                v_s_i( i, j, d ) = v_s[d];
+                v_w_i( i, j, d ) = ( has_water && !( flags_w_i( i, j ) & bit ) )
+                                       ? mv_w_i( i, j, d ) / m_w_i( i, j )
+                                       : v_s[d];
+            }
+        } );
+}
+
+} // namespace mpm
+
+#endif // MPM_GRID_UPDATE_TWO_PHASE_HPP

@@ -1,0 +1,257 @@
+#ifndef MPM_RETENTION_HPP
+#define MPM_RETENTION_HPP
+
+#include <physics/mpm_retention_params.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
+
+namespace mpm
+{
+namespace physics
+{
+//! Degree of saturation, its derivative dS/dp_w (1/Pa, >= 0) and k_rel.
+struct RetentionState
+{
+    double S;
+    double dS_dp;
+    double k_rel;
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Soil-water retention S(p_w) and relative permeability k_rel(S).
+
+  p_w in Pa, compression positive; suction s = max(-p_w, 0). Every law gives
+  S = s_sat (Saturated: 1), dS/dp_w = 0 and k_rel = 1 at p_w >= 0, and
+  dS/dp_w >= 0 (S grows as p_w rises to 0; the paper's lambda = -dS/dp_w).
+  k_rel is floored at k_rel_min except for the laws with k_rel = 1.
+  Pure arithmetic, no loops: callable from any backend.
+*/
+struct Retention
+{
+    //! \brief S (-), dS/dp_w (1/Pa) and k_rel (-) at pore pressure p_w (Pa).
+    KOKKOS_INLINE_FUNCTION RetentionState operator()( const RetentionParams& r,
+                                                      const double p_w ) const
+    {
+        switch ( r.model )
+        {
+        case RetentionModel::VanGenuchten:
+            return vanGenuchten( r, p_w );
+        case RetentionModel::Liakopoulos:
+            return liakopoulos( r, p_w );
+        case RetentionModel::Gardner:
+            return gardner( r, p_w );
+        case RetentionModel::Linear:
+            return linear( r, p_w );
+        default:
+            return RetentionState{ 1.0, 0.0, 1.0 };
+        }
+    }
+
+    //! \brief Degree of saturation S(p_w) (-) only, p_w in Pa.
+    KOKKOS_INLINE_FUNCTION double saturation( const RetentionParams& r,
+                                              const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        const double s = p_w < 0.0 ? -p_w : 0.0;
+        const double width = r.s_sat - r.s_res;
+        switch ( r.model )
+        {
+        case RetentionModel::VanGenuchten:
+        {
+            // Eq. 16a: S_e = (1 + (alpha s)^n)^-(1 - 1/n).
+            const double x = r.alpha_per_pa * s;
+            if ( !( x > 0.0 ) )
+                return r.s_sat;
+            const double m = 1.0 - 1.0 / r.n_vg;
+            return r.s_res +
+                   width * KE::exp( -m * vanGenuchtenTerms( r.n_vg, x ).log_a );
+        }
+        case RetentionModel::Liakopoulos:
+            return liakopoulos( r, p_w ).S;
+        case RetentionModel::Gardner:
+            return gardner( r, p_w ).S;
+        case RetentionModel::Linear:
+            return linear( r, p_w ).S;
+        default:
+            return 1.0;
+        }
+    }
+
+    /*!
+      \brief Relative permeability k_rel(S) (-) from the degree of saturation.
+
+      van Genuchten: Mualem, Eq. 19, with S_e from Eq. 17 clamped to [0, 1].
+      Near S_e = 1 this loses accuracy to the cancellation in S_e = (S -
+      s_res) / width; operator() evaluates k_rel from p_w without it.
+    */
+    KOKKOS_INLINE_FUNCTION double
+    relativePermeability( const RetentionParams& r, const double S ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        const double width = r.s_sat - r.s_res;
+        double s_e = width > 0.0 ? ( S - r.s_res ) / width : 1.0;
+        s_e = s_e < 0.0 ? 0.0 : ( s_e > 1.0 ? 1.0 : s_e );
+        double k_rel = 1.0;
+        switch ( r.model )
+        {
+        case RetentionModel::VanGenuchten:
+        {
+            if ( s_e >= 1.0 )
+                return 1.0;
+            if ( !( s_e > 0.0 ) )
+                return r.k_rel_min;
+            // w = S_e^(1/m); log(1 - w) and 1 - (1 - w)^m without cancellation.
+            const double m = 1.0 - 1.0 / r.n_vg;
+            const double log_w = KE::log( s_e ) / m;
+            const double log_u = log_w < -0.6931471805599453
+                                     ? KE::log1p( -KE::exp( log_w ) )
+                                     : KE::log( -KE::expm1( log_w ) );
+            const double t = -KE::expm1( m * log_u );
+            k_rel = KE::sqrt( s_e ) * t * t;
+            break;
+        }
+        case RetentionModel::Liakopoulos:
+            // Eq. 13: k_rel = 1 - 2.207 (1 - S)^1.0121.
+            k_rel = S >= 1.0 ? 1.0 : 1.0 - 2.207 * KE::pow( 1.0 - S, 1.0121 );
+            break;
+        case RetentionModel::Gardner:
+            k_rel = s_e;
+            break;
+        default:
+            return 1.0;
+        }
+        return k_rel > r.k_rel_min ? k_rel : r.k_rel_min;
+    }
+
+    /*!
+      \brief van Genuchten, Eqs. 16-17, and Mualem k_rel, Eq. 19; alpha in 1/Pa.
+
+      With x = alpha s, x^n, A = 1 + x^n and m = 1 - 1/n: S_e = A^-m,
+      S_e^(1/m) = 1/A, so 1 - S_e^(1/m) = x^n / A exactly and
+        k_rel = sqrt(S_e) (1 - (x^n / A)^m)^2,
+        dS/dp_w = (s_sat - s_res) (n - 1) S_e (x^n / A) / s.
+      log(A) and d = -log(x^n / A) = log1p(1 / x^n) are both formed without
+      cancellation; 1 - exp(-m d) uses expm1, so k_rel is accurate at both
+      ends (S_e -> 1 and S_e -> 0).
+    */
+    KOKKOS_INLINE_FUNCTION RetentionState
+    vanGenuchten( const RetentionParams& r, const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        const double s = p_w < 0.0 ? -p_w : 0.0;
+        const double x = r.alpha_per_pa * s;
+        if ( !( x > 0.0 ) )
+            return RetentionState{ r.s_sat, 0.0, 1.0 };
+        const double m = 1.0 - 1.0 / r.n_vg;
+        const VanGenuchtenTerms v = vanGenuchtenTerms( r.n_vg, x );
+        const double s_e = KE::exp( -m * v.log_a );
+        const double width = r.s_sat - r.s_res;
+        const double t = -KE::expm1( -m * v.d );
+        const double k_rel = KE::sqrt( s_e ) * t * t;
+        return RetentionState{ r.s_res + width * s_e,
+                               width * ( r.n_vg - 1.0 ) * s_e * v.q / s,
+                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+    }
+
+    //! log(A), d = log(1 + x^-n) = -log(x^n / A) and q = x^n / A, A = 1 + x^n.
+    struct VanGenuchtenTerms
+    {
+        double log_a;
+        double d;
+        double q;
+    };
+
+    //! \brief The terms of VanGenuchtenTerms for x = alpha s > 0 (-).
+    KOKKOS_INLINE_FUNCTION static VanGenuchtenTerms
+    vanGenuchtenTerms( const double n, const double x )
+    {
+        namespace KE = Kokkos::Experimental;
+        const double log_xn = n * KE::log( x );
+        const double xn = KE::exp( log_xn );
+        // Split at x^n = 1 so neither log(A) nor d suffers cancellation.
+        if ( xn > 1.0 )
+        {
+            const double inv_xn = 1.0 / xn;
+            const double d = KE::log1p( inv_xn );
+            return VanGenuchtenTerms{ log_xn + d, d, 1.0 / ( 1.0 + inv_xn ) };
+        }
+        const double log_a = KE::log1p( xn );
+        return VanGenuchtenTerms{ log_a, log_a - log_xn, xn / ( 1.0 + xn ) };
+    }
+
+    /*!
+      \brief Liakopoulos sand, Eqs. 12-13 with the corrected factor: S = 1 -
+      1.9722e-11 s^2.4279 (s in Pa), k_rel = 1 - 2.207 (1 - S)^1.0121.
+
+      Fitted for S > 0.91 (s < 9.5 kPa). Beyond it S keeps falling and is
+      clamped at S = s_res (S >= 0 when s_res = 0; OGS uses S_min = 0.2) with
+      dS/dp_w = 0 there; k_rel reaches 0 at S = 0.5426 (s = 18.6 kPa) and is
+      floored at k_rel_min (porousLab: 1e-4). s_sat is not used (S_sat = 1).
+    */
+    KOKKOS_INLINE_FUNCTION RetentionState liakopoulos( const RetentionParams& r,
+                                                       const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        if ( !( p_w < 0.0 ) )
+            return RetentionState{ 1.0, 0.0, 1.0 };
+        constexpr double log_a = -24.64928635201841; // log(1.9722e-11)
+        constexpr double b = 2.4279;
+        const double s = -p_w;
+        // 1 - S = a s^b, formed directly (no cancellation in k_rel).
+        double log_one_minus_s = log_a + b * KE::log( s );
+        const double one_minus_s = KE::exp( log_one_minus_s );
+        double S = 1.0 - one_minus_s;
+        double dS_dp = b * one_minus_s / s;
+        if ( S < r.s_res )
+        {
+            // Clamped at the residual saturation.
+            S = r.s_res;
+            log_one_minus_s = KE::log( 1.0 - r.s_res );
+            dS_dp = 0.0;
+        }
+        const double k_rel = 1.0 - 2.207 * KE::exp( 1.0121 * log_one_minus_s );
+        return RetentionState{ S, dS_dp,
+                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+    }
+
+    /*!
+      \brief Gardner: psi = p_w / rho_w_g (m), S_e = exp(alpha psi) for psi <
+      0 (alpha in 1/m), S = s_res + (s_sat - s_res) S_e, k_rel = S_e.
+    */
+    KOKKOS_INLINE_FUNCTION RetentionState gardner( const RetentionParams& r,
+                                                   const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        if ( !( p_w < 0.0 ) )
+            return RetentionState{ r.s_sat, 0.0, 1.0 };
+        const double c = r.alpha_per_m / r.rho_w_g; // 1/Pa
+        const double s_e = KE::exp( c * p_w );
+        const double width = r.s_sat - r.s_res;
+        return RetentionState{ r.s_res + width * s_e, width * c * s_e,
+                               s_e > r.k_rel_min ? s_e : r.k_rel_min };
+    }
+
+    /*!
+      \brief Linear: S = s_sat - (s_sat - s_res) min(s / s_range, 1) with s =
+      -p_w and s_range = suction_range_pa (Pa); k_rel = 1.
+    */
+    KOKKOS_INLINE_FUNCTION RetentionState linear( const RetentionParams& r,
+                                                  const double p_w ) const
+    {
+        const double s = p_w < 0.0 ? -p_w : 0.0;
+        const double width = r.s_sat - r.s_res;
+        if ( !( s > 0.0 ) )
+            return RetentionState{ r.s_sat, 0.0, 1.0 };
+        if ( s >= r.suction_range_pa )
+            return RetentionState{ r.s_res, 0.0, 1.0 };
+        const double slope = width / r.suction_range_pa;
+        return RetentionState{ r.s_sat - slope * s, slope, 1.0 };
+    }
+};
+
+} // namespace physics
+} // namespace mpm
+
+#endif // MPM_RETENTION_HPP

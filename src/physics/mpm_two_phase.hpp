@@ -1,0 +1,163 @@
+#ifndef MPM_TWO_PHASE_HPP
+#define MPM_TWO_PHASE_HPP
+
+#include <physics/mpm_material_params.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
+
+namespace mpm
+{
+namespace physics
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Implicit-drag nodal update of the two-phase momentum balance, one
+  node and one direction (formulation.md, step 2; Eqs. 9-10):
+    (m_w/dt + Q) v_w' - Q v_s'          = m_w/dt v_w + F_w
+    -Q v_w'          + (m_s/dt + Q) v_s' = m_s/dt v_s + F_m - F_w
+  with the drag coefficient Q (kg/s) at the new time, so no permeability
+  limits the step. A fixed solid sets v_s' = 0; an impermeable boundary
+  ties v_w' = v_s'; the remaining scalar equation is then solved.
+  Local damping reduces each force by damping |F| along its phase velocity.
+*/
+struct TwoPhaseNodalUpdate
+{
+    double dt;      //!< time step, s
+    double damping; //!< local damping coefficient
+
+    struct Result
+    {
+        double v_s, v_w;   //!< new velocities, m/s
+        double dv_s, dv_w; //!< velocity increments, m/s
+    };
+
+    KOKKOS_INLINE_FUNCTION static double sign( const double v )
+    {
+        return ( v > 0.0 ) - ( v < 0.0 );
+    }
+
+    KOKKOS_INLINE_FUNCTION Result operator()( const double m_s, const double m_w,
+                                              const double mv_s,
+                                              const double mv_w, double f_m,
+                                              double f_w, const double q,
+                                              const bool solid_fixed,
+                                              const bool water_tied ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        const double v_s = mv_s / m_s;
+        // A node with (almost) no water moves its water with the solid.
+        const bool has_water = m_w > 1.0e-12 * m_s;
+        const double v_w = has_water ? mv_w / m_w : v_s;
+        f_m -= damping * KE::fabs( f_m ) * sign( v_s );
+        f_w -= damping * KE::fabs( f_w ) * sign( v_w );
+
+        const double a_w = m_w / dt;
+        const double a_s = m_s / dt;
+        const double b_w = a_w * v_w + f_w;
+        const double b_s = a_s * v_s + f_m - f_w;
+        Result r;
+        if ( solid_fixed )
+        {
+            r.v_s = 0.0;
+            r.v_w = ( water_tied || !has_water ) ? 0.0 : b_w / ( a_w + q );
+        }
+        else if ( water_tied || !has_water )
+        {
+            // v_w' = v_s': the sum of both equations (the mixture).
+            r.v_s = ( b_w + b_s ) / ( a_w + a_s );
+            r.v_w = r.v_s;
+        }
+        else
+        {
+            const double det = a_w * a_s + q * ( a_w + a_s );
+            r.v_w = ( ( a_s + q ) * b_w + q * b_s ) / det;
+            r.v_s = ( q * b_w + ( a_w + q ) * b_s ) / det;
+        }
+        r.dv_s = r.v_s - v_s;
+        r.dv_w = r.v_w - v_w;
+        return r;
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Drag coefficient of one point, (nS)^2 mu / (k k_rel) V (kg/s),
+  from Eq. 9 times nS per unit mixture volume.
+*/
+KOKKOS_INLINE_FUNCTION double dragCoefficient( const double n, const double S,
+                                               const double viscosity,
+                                               const double permeability,
+                                               const double k_rel,
+                                               const double volume )
+{
+    const double nS = n * S;
+    return nS * nS * viscosity / ( permeability * k_rel ) * volume;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Mass-conservative pore-pressure increment of one point (Eq. 8,
+  formulation.md step 6): solves for dp
+    n (S(p + dp) - S(p)) + n S dp / K_w = -dt (n S div v_w + (1 - n) S div v_s)
+  by Newton iterations safeguarded by bisection (the left side is monotone
+  in dp). `retention(p)` returns the retention state at pressure p.
+*/
+template <class RetentionFunction>
+KOKKOS_INLINE_FUNCTION double
+porePressureIncrement( const RetentionFunction& retention, const double p_w,
+                       const double S, const double n, const double bulk_modulus,
+                       const double volume_change )
+{
+    namespace KE = Kokkos::Experimental;
+    // volume_change = -dt (n S div v_w + (1 - n) S div v_s), dimensionless.
+    const double storage = n * S / bulk_modulus;
+    // Bracket: the storage term alone bounds the root.
+    double lo = volume_change < 0.0 ? volume_change / storage : 0.0;
+    double hi = volume_change > 0.0 ? volume_change / storage : 0.0;
+    double dp = 0.0;
+    for ( int iter = 0; iter < 50; ++iter )
+    {
+        const auto state = retention( p_w + dp );
+        const double g = n * ( state.S - S ) + storage * dp - volume_change;
+        if ( g > 0.0 )
+            hi = dp;
+        else
+            lo = dp;
+        const double slope = n * state.dS_dp + storage;
+        double next = dp - g / slope;
+        if ( !( next > lo && next < hi ) )
+            next = 0.5 * ( lo + hi );
+        const double change = KE::fabs( next - dp );
+        dp = next;
+        if ( change <= 1.0e-12 * ( KE::fabs( p_w ) + KE::fabs( dp ) ) + 1.0e-9 )
+            break;
+    }
+    return dp;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Wave speeds of one point (formulation.md, time step), m/s: the
+  undrained mixture wave sqrt((E_c + S^2 / (n (dS/dp + S/K_w))) / rho_m)
+  and the pore-water wave sqrt(S / ((dS/dp + S/K_w) rho_w)); returns the
+  larger.
+*/
+KOKKOS_INLINE_FUNCTION double twoPhaseWaveSpeed( const double constrained_modulus,
+                                                 const double rho_m,
+                                                 const double rho_w, const double n,
+                                                 const double S, const double dS_dp,
+                                                 const double bulk_modulus )
+{
+    namespace KE = Kokkos::Experimental;
+    const double compressibility = dS_dp + S / bulk_modulus;
+    const double c_mixture =
+        KE::sqrt( ( constrained_modulus + S * S / ( n * compressibility ) ) / rho_m );
+    const double c_water = KE::sqrt( S / ( compressibility * rho_w ) );
+    return c_mixture > c_water ? c_mixture : c_water;
+}
+
+} // namespace physics
+} // namespace mpm
+
+#endif // MPM_TWO_PHASE_HPP

@@ -1,0 +1,112 @@
+#include <setup/mpm_conditions.hpp>
+#include <setup/mpm_geometry.hpp>
+#include <setup/mpm_particle_generator.hpp>
+
+#include <mpm_device_type.hpp>
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+double evaluateTimeFunction( const TimeFunction& function, const double t )
+{
+    if ( function.empty() )
+        return 1.0;
+    if ( t <= function.front()[0] )
+        return function.front()[1];
+    for ( std::size_t k = 1; k < function.size(); ++k )
+        if ( t <= function[k][0] )
+        {
+            const auto& a = function[k - 1];
+            const auto& b = function[k];
+            return a[1] + ( b[1] - a[1] ) * ( t - a[0] ) / ( b[0] - a[0] );
+        }
+    return function.back()[1];
+}
+
+//---------------------------------------------------------------------------//
+std::vector<bool> selectPoints( const PointSelection& selection,
+                                const std::vector<double>& x,
+                                const std::vector<int>& status,
+                                const GridConfig& grid )
+{
+    const std::size_t n = status.size();
+    std::vector<bool> picked( n, false );
+    const double h = grid.cell_size_m;
+    auto cellOf = [&]( std::size_t p ) {
+        return std::make_pair(
+            static_cast<int>( std::floor( ( x[2 * p] - grid.origin_m[0] ) / h ) ),
+            static_cast<int>(
+                std::floor( ( x[2 * p + 1] - grid.origin_m[1] ) / h ) ) );
+    };
+    std::set<std::pair<int, int>> occupied;
+    if ( selection.kind == PointSelection::Kind::SurfaceCells )
+        for ( std::size_t p = 0; p < n; ++p )
+            if ( status[p] == point_active )
+                occupied.insert( cellOf( p ) );
+
+    for ( std::size_t p = 0; p < n; ++p )
+    {
+        if ( status[p] != point_active )
+            continue;
+        if ( selection.kind == PointSelection::Kind::Box )
+        {
+            const auto& b = selection.box_m;
+            picked[p] = x[2 * p] >= b[0][0] && x[2 * p] <= b[1][0] &&
+                        x[2 * p + 1] >= b[0][1] && x[2 * p + 1] <= b[1][1];
+        }
+        else
+        {
+            const auto cell = cellOf( p );
+            picked[p] = occupied.count( { cell.first, cell.second + 1 } ) == 0;
+        }
+    }
+    return picked;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<int> waterNodeFlags( const GridConfig& grid,
+                                 const std::vector<BoundaryConfig>& boundaries )
+{
+    const int nx1 = grid.cells[0] + 1;
+    const int ny1 = grid.cells[1] + 1;
+    std::vector<int> flags( nx1 * ny1, node_free );
+    // Grid edges are impermeable by default.
+    for ( int i = 0; i < nx1; ++i )
+        for ( int j = 0; j < ny1; ++j )
+        {
+            if ( i == 0 || i == nx1 - 1 )
+                flags[i * ny1 + j] |= node_fix_x;
+            if ( j == 0 || j == ny1 - 1 )
+                flags[i * ny1 + j] |= node_fix_y;
+        }
+    for ( const BoundaryConfig& bc : boundaries )
+    {
+        // Reuse the solid selector: the nodes a fixed condition would pick.
+        BoundaryConfig selector = bc;
+        selector.condition = BoundaryCondition::Fixed;
+        selector.constrains_solid = true;
+        const std::vector<int> selected = nodeFlags( grid, { selector } );
+        int tie = node_fixed;
+        if ( bc.where == BoundarySelector::Left || bc.where == BoundarySelector::Right )
+            tie = node_fix_x;
+        else if ( bc.where == BoundarySelector::Bottom ||
+                  bc.where == BoundarySelector::Top )
+            tie = node_fix_y;
+        for ( std::size_t k = 0; k < flags.size(); ++k )
+        {
+            if ( selected[k] == node_free )
+                continue;
+            if ( bc.hydraulic == HydraulicCondition::Drained )
+                flags[k] &= ~tie;
+            else
+                flags[k] |= tie;
+        }
+    }
+    return flags;
+}
+
+} // namespace mpm

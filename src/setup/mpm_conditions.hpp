@@ -1,0 +1,31 @@
+#ifndef MPM_CONDITIONS_HPP
+#define MPM_CONDITIONS_HPP
+
+#include <io/mpm_case_config.hpp>
+
+#include <vector>
+
+namespace mpm
+{
+//! Value of a piecewise-linear time function at stage time t (1 if empty).
+double evaluateTimeFunction( const TimeFunction& function, double t );
+
+/*!
+  \brief Which points a selection picks, from their positions x (2 per
+  point) and status (only active points are picked). SurfaceCells picks the
+  points of every occupied cell whose upper neighbour cell holds no point.
+*/
+std::vector<bool> selectPoints( const PointSelection& selection,
+                                const std::vector<double>& x,
+                                const std::vector<int>& status,
+                                const GridConfig& grid );
+
+//! Water tie flags (NodeFlag bits) of every node, flat index i * (ny + 1) + j:
+//! grid edges are impermeable (normal water velocity = solid's) unless a
+//! boundary drains them; an impermeable below_polyline boundary ties both.
+std::vector<int> waterNodeFlags( const GridConfig& grid,
+                                 const std::vector<BoundaryConfig>& boundaries );
+
+} // namespace mpm
+
+#endif // MPM_CONDITIONS_HPP
