@@ -8,6 +8,7 @@
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
 #include <mpm_p2g.hpp>
+#include <mpm_scatter.hpp>
 #include <mpm_stress_update.hpp>
 #include <mpm_velocity_gradient.hpp>
 
@@ -35,6 +36,33 @@ void BM_p2g( benchmark::State& state )
         mpm::p2gMassMomentumForce<ExecSpace, Duplication>(
             space, sim.particles, sim.grid, problem.settings.gravity_x,
             problem.settings.gravity_y );
+        space.fence();
+    }
+    problem.setCounters( state );
+}
+
+//---------------------------------------------------------------------------//
+//! The fixed cost of P2G without its point loop: the grid resets and the
+//! three ScatterViews created and contributed (for Duplicated, one zeroed
+//! copy of each grid field per thread, summed by contribute).
+template <class ExecSpace, class Duplication>
+void BM_p2gScatterOverhead( benchmark::State& state )
+{
+    BlockProblem<ExecSpace> problem( static_cast<int>( state.range( 0 ) ) );
+    auto& gv = problem.sim.grid;
+    const ExecSpace space;
+    space.fence();
+    for ( auto _ : state )
+    {
+        Kokkos::deep_copy( space, gv.m_i, 0.0 );
+        Kokkos::deep_copy( space, gv.p_i, 0.0 );
+        Kokkos::deep_copy( space, gv.f_i, 0.0 );
+        auto m_sv = mpm::createScatterSum<ExecSpace, Duplication>( gv.m_i );
+        auto p_sv = mpm::createScatterSum<ExecSpace, Duplication>( gv.p_i );
+        auto f_sv = mpm::createScatterSum<ExecSpace, Duplication>( gv.f_i );
+        KE::contribute( gv.m_i, m_sv );
+        KE::contribute( gv.p_i, p_sv );
+        KE::contribute( gv.f_i, f_sv );
         space.fence();
     }
     problem.setCounters( state );
@@ -181,6 +209,9 @@ void stepSizes( benchmark::internal::Benchmark* b )
 // Serial: the single-thread baseline (plain adds, no duplication).
 BENCHMARK_TEMPLATE( BM_p2g, Kokkos::Serial, KE::ScatterNonDuplicated )
     ->Name( "p2g/Serial/plain" )->Apply( kernelSizes );
+BENCHMARK_TEMPLATE( BM_p2gScatterOverhead, Kokkos::Serial,
+                    KE::ScatterNonDuplicated )
+    ->Name( "p2g_overhead/Serial/plain" )->Apply( kernelSizes );
 BENCHMARK_TEMPLATE( BM_gridUpdate, Kokkos::Serial )
     ->Name( "grid_update/Serial/none" )->Apply( kernelSizes );
 BENCHMARK_TEMPLATE( BM_g2p, Kokkos::Serial )
@@ -198,6 +229,12 @@ BENCHMARK_TEMPLATE( BM_p2g, Kokkos::OpenMP, KE::ScatterDuplicated )
     ->Name( "p2g/OpenMP/duplicated" )->Apply( kernelSizes );
 BENCHMARK_TEMPLATE( BM_p2g, Kokkos::OpenMP, KE::ScatterNonDuplicated )
     ->Name( "p2g/OpenMP/atomic" )->Apply( kernelSizes );
+BENCHMARK_TEMPLATE( BM_p2gScatterOverhead, Kokkos::OpenMP,
+                    KE::ScatterDuplicated )
+    ->Name( "p2g_overhead/OpenMP/duplicated" )->Apply( kernelSizes );
+BENCHMARK_TEMPLATE( BM_p2gScatterOverhead, Kokkos::OpenMP,
+                    KE::ScatterNonDuplicated )
+    ->Name( "p2g_overhead/OpenMP/atomic" )->Apply( kernelSizes );
 BENCHMARK_TEMPLATE( BM_gridUpdate, Kokkos::OpenMP )
     ->Name( "grid_update/OpenMP/none" )->Apply( kernelSizes );
 BENCHMARK_TEMPLATE( BM_g2p, Kokkos::OpenMP )

@@ -9,6 +9,9 @@
 #     benchmark_filter  Google Benchmark regex, e.g. 'cells_high:65/' or '^p2g/'
 #                       (default: all)
 # Environment: BENCH_REPETITIONS (default 5), BENCH_MIN_TIME in s (default 0.5).
+# Repetitions are randomly interleaved across benchmarks, so a burst of load
+# from other processes spreads over many benchmarks instead of spoiling the
+# medians of one; still, run on an otherwise idle machine.
 # Writes bench/results/raw_nt{1,2}.json (Google Benchmark output) and
 # bench/results/strong_scaling.json, and prints a Markdown table on stdout
 # (benchmark progress goes to stderr).
@@ -58,6 +61,7 @@ for nt in 1 2; do
         --benchmark_filter="$run_filter" \
         --benchmark_repetitions="$repetitions" \
         --benchmark_report_aggregates_only=true \
+        --benchmark_enable_random_interleaving=true \
         --benchmark_min_time="$min_time" \
         --benchmark_out="$out" --benchmark_out_format=json >&2
     raw_files+=("$out")

@@ -13,9 +13,10 @@ import argparse
 import json
 import sys
 
-KERNELS = ["p2g", "grid_update", "g2p", "remap", "stress_update", "step"]
+KERNELS = ["p2g", "p2g_overhead", "grid_update", "g2p", "remap", "stress_update", "step"]
 KERNEL_LABELS = {
     "p2g": "P2G (mass, momentum, force)",
+    "p2g_overhead": "P2G fixed cost only (grid reset + ScatterView create/contribute, no point loop)",
     "grid_update": "grid update (active nodes + dry update)",
     "g2p": "G2P (velocity)",
     "remap": "MUSL remap (p2gMomentum + remapVelocity)",

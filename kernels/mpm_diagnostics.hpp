@@ -35,8 +35,8 @@ double kineticEnergy( const ExecSpace& exec_space,
 //---------------------------------------------------------------------------//
 /*!
   \brief Smallest index of an active point whose position, velocity,
-  stress, volume (two-phase: pore pressure, water velocity) is not finite, or whose speed exceeds `speed_limit`;
-  -1 if there is none.
+  stress, volume (two-phase: pore pressure, water velocity) is not finite, or
+  whose speed exceeds `speed_limit`; -1 if there is none.
 */
 template <class ExecSpace>
 int findUnstablePoint( const ExecSpace& exec_space,
@@ -62,12 +62,11 @@ int findUnstablePoint( const ExecSpace& exec_space,
             if ( status_p( p ) != point_active )
                 return;
             // Any NaN or infinity makes the sum non-finite.
-            const double sum = x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) +
-                               sigma_p( p, 1 ) + sigma_p( p, 2 ) +
-                               sigma_p( p, 3 ) + vol_p( p ) +
-                               ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) +
-                                                 v_w_p( p, 1 )
-                                           : 0.0 );
+            const double sum =
+                x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) + sigma_p( p, 1 ) +
+                sigma_p( p, 2 ) + sigma_p( p, 3 ) + vol_p( p ) +
+                ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) + v_w_p( p, 1 )
+                            : 0.0 );
             const double speed2 =
                 v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
             const bool bad = !KE::isfinite( sum ) || !KE::isfinite( speed2 ) ||

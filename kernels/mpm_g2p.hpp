@@ -47,7 +47,8 @@ KOKKOS_INLINE_FUNCTION double flipPicBlend( const double flip_fraction,
   functions at the start-of-step positions).
 */
 template <class ExecSpace>
-void g2pVelocity( const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+void g2pVelocity( const ExecSpace& exec_space,
+                  const ParticleViews<ExecSpace>& pv,
                   const GridViews<ExecSpace>& gv, const double dt,
                   const double flip_fraction )
 {
@@ -72,8 +73,8 @@ void g2pVelocity( const ExecSpace& exec_space, const ParticleViews<ExecSpace>& p
             interpolateVelocity( ci, cj, w, v_i, dv_i, v_pic, dv );
             for ( int d = 0; d < 2; ++d )
             {
-                v_p( p, d ) = flipPicBlend( flip_fraction, v_p( p, d ), dv[d],
-                                            v_pic[d] );
+                v_p( p, d ) =
+                    flipPicBlend( flip_fraction, v_p( p, d ), dv[d], v_pic[d] );
                 du_p( p, d ) = dt * v_pic[d];
             }
         } );

@@ -49,10 +49,10 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r = update( m_s_i( i, j ), m_w_i( i, j ),
-                                       mv_s_i( i, j, d ), mv_w_i( i, j, d ),
-                                       f_m_i( i, j, d ), f_w_i( i, j, d ),
-                                       q_i( i, j ), flags & bit, flags_w & bit );
+                const auto r = update(
+                    m_s_i( i, j ), m_w_i( i, j ), mv_s_i( i, j, d ),
+                    mv_w_i( i, j, d ), f_m_i( i, j, d ), f_w_i( i, j, d ),
+                    q_i( i, j ), flags & bit, flags_w & bit );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;
@@ -67,7 +67,8 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
   with the solid's flags and the water ties (v_w = v_s on tied components).
 */
 template <class ExecSpace>
-void remapVelocityTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+void remapVelocityTwoPhase( const ExecSpace& exec_space,
+                            GridViews<ExecSpace>& gv,
                             WaterGridViews<ExecSpace>& wg )
 {
     const auto m_s_i = gv.m_i;

@@ -62,8 +62,10 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
             const double s_yy = sigma_p( p, 1 );
             const double s_xy = sigma_p( p, 2 );
             const int load = load_p( p );
-            const double f_x = m * gravity_x + ( load >= 0 ? load_force( load, 0 ) : 0.0 );
-            const double f_y = m * gravity_y + ( load >= 0 ? load_force( load, 1 ) : 0.0 );
+            const double f_x =
+                m * gravity_x + ( load >= 0 ? load_force( load, 0 ) : 0.0 );
+            const double f_y =
+                m * gravity_y + ( load >= 0 ? load_force( load, 1 ) : 0.0 );
             for ( int k = 0; k < 4; ++k )
             {
                 const int i = ci + ( k & 1 );

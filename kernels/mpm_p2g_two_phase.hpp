@@ -25,9 +25,10 @@ namespace mpm
 template <class ExecSpace,
           class Duplication = typename ScatterDuplication<ExecSpace>::type,
           class LoadView>
-void p2gTwoPhase( const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
-                  const WaterParticleViews<ExecSpace>& wv, GridViews<ExecSpace>& gv,
-                  WaterGridViews<ExecSpace>& wg,
+void p2gTwoPhase( const ExecSpace& exec_space,
+                  const ParticleViews<ExecSpace>& pv,
+                  const WaterParticleViews<ExecSpace>& wv,
+                  GridViews<ExecSpace>& gv, WaterGridViews<ExecSpace>& wg,
                   const physics::MaterialTable& materials,
                   const physics::WaterParams& water, const double gravity_x,
                   const double gravity_y, const LoadView& load_force )
@@ -119,8 +120,9 @@ void p2gTwoPhase( const ExecSpace& exec_space, const ParticleViews<ExecSpace>& p
                                               s_xy * dwdx[k] + s_yy * dwdy[k] };
                 for ( int d = 0; d < 2; ++d )
                 {
-                    f_m_i( i, j, d ) += w[k] * ( ( m_s + m_w ) * g[d] + load[d] ) -
-                                        vol * div_sigma[d];
+                    f_m_i( i, j, d ) +=
+                        w[k] * ( ( m_s + m_w ) * g[d] + load[d] ) -
+                        vol * div_sigma[d];
                     f_w_i( i, j, d ) +=
                         w[k] * m_w * g[d] + nS * p_w * vol * grad[d];
                 }
@@ -147,7 +149,8 @@ template <class ExecSpace,
 void p2gMomentumTwoPhase( const ExecSpace& exec_space,
                           const ParticleViews<ExecSpace>& pv,
                           const WaterParticleViews<ExecSpace>& wv,
-                          GridViews<ExecSpace>& gv, WaterGridViews<ExecSpace>& wg,
+                          GridViews<ExecSpace>& gv,
+                          WaterGridViews<ExecSpace>& wg,
                           const double water_density )
 {
     Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );

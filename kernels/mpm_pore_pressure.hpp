@@ -37,7 +37,8 @@ void porePressureUpdate( const ExecSpace& exec_space,
                          const WaterParticleViews<ExecSpace>& wv,
                          const physics::MaterialTable& materials,
                          const physics::WaterParams& water, const double dt,
-                         const bool saturated, const PressureView& prescribed_p_w )
+                         const bool saturated,
+                         const PressureView& prescribed_p_w )
 {
     const physics::Kinematics kinematics{ dt };
     const auto grad_v_p = pv.grad_v_p;

@@ -64,12 +64,11 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
   wave of each point (physics::twoPhaseWaveSpeed), h / (c_p + |v_s|).
 */
 template <class ExecSpace>
-WaveSpeedLimit criticalTimeStepTwoPhase( const ExecSpace& exec_space,
-                                         const ParticleViews<ExecSpace>& pv,
-                                         const WaterParticleViews<ExecSpace>& wv,
-                                         const physics::MaterialTable& materials,
-                                         const physics::WaterParams& water,
-                                         const double cell_size )
+WaveSpeedLimit criticalTimeStepTwoPhase(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const WaterParticleViews<ExecSpace>& wv,
+    const physics::MaterialTable& materials, const physics::WaterParams& water,
+    const double cell_size )
 {
     namespace KE = Kokkos::Experimental;
     const auto v_p = pv.v_p;

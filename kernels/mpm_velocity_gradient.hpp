@@ -13,10 +13,9 @@ namespace mpm
 //---------------------------------------------------------------------------//
 //! L_ab = sum_k v_i(k)_a dN_k/dx_b over the 4 nodes of cell (ci, cj).
 template <class VectorView>
-KOKKOS_INLINE_FUNCTION void gradientAt( const int ci, const int cj,
-                                        const double dwdx[4],
-                                        const double dwdy[4],
-                                        const VectorView& v_i, double L[2][2] )
+KOKKOS_INLINE_FUNCTION void
+gradientAt( const int ci, const int cj, const double dwdx[4],
+            const double dwdy[4], const VectorView& v_i, double L[2][2] )
 {
     L[0][0] = L[0][1] = L[1][0] = L[1][1] = 0.0;
     for ( int k = 0; k < 4; ++k )

@@ -54,6 +54,51 @@ inline mpm::CaseConfig columnCase( const double height, const double h,
     return c;
 }
 
+//! A saturated two-phase linear elastic soil.
+inline mpm::MaterialConfig saturatedMaterial( const double E, const double nu,
+                                              const double rho_s,
+                                              const double n, const double k )
+{
+    mpm::MaterialConfig m = elasticMaterial( E, nu, 0.0 );
+    m.solid_density_kg_per_m3 = rho_s;
+    m.porosity = n;
+    m.permeability_m2 = k;
+    return m;
+}
+
+/*!
+  \brief Terzaghi consolidation column (verification.md 2.2): height H on a
+  fixed impermeable base, rollers on the sides, drained top surface, no
+  gravity, a traction sigma_c ramped on over t_ramp on the top points.
+*/
+inline mpm::CaseConfig terzaghiCase( const int cells, const double K_w,
+                                     const double t_end, const double t_ramp )
+{
+    const double H = 1.0, h = H / cells;
+    mpm::StageConfig stage;
+    stage.name = "consolidation";
+    stage.type = mpm::StageType::Dynamic;
+    stage.gravity_m_per_s2 = { 0.0, 0.0 };
+    stage.duration_s = t_end;
+    // E = 10 MPa, nu = 0, n = 0.3, rho_s = 2650, K = 1e-3 m/s.
+    const double k = 1.0e-3 * 1.0e-3 / ( 1000.0 * 9.81 );
+    auto c = columnCase( H, h, saturatedMaterial( 1.0e7, 0.0, 2650.0, 0.3, k ),
+                         stage );
+    c.analysis = mpm::AnalysisType::Saturated;
+    c.water.bulk_modulus_pa = K_w;
+    c.water.density_kg_per_m3 = 1000.0;
+    c.water.viscosity_pa_s = 1.0e-3;
+    mpm::PointLoad load;
+    load.points.kind = mpm::PointSelection::Kind::Box;
+    load.points.box_m = { mpm::Point2{ -1.0, H - 0.5 * h },
+                          mpm::Point2{ 1.0, H } };
+    load.traction_pa = { 0.0, -1.0e4 };
+    load.length_m = h;
+    load.time_function = { { 0.0, 0.0 }, { t_ramp, 1.0 } };
+    c.stages[0].loads = { load };
+    return c;
+}
+
 } // namespace mpm_test
 
 #endif // MPM_TEST_CASES_HPP

@@ -40,7 +40,7 @@ struct ParticleViews
     int_view material_p;     //!< material id
     int_view id_p;           //!< original index (stable identifier)
     int_view status_p;       //!< PointStatus
-    int_view load_p; //!< index of the load acting on it, -1 if none
+    int_view load_p;         //!< index of the load acting on it, -1 if none
 
     ParticleViews() = default;
 

@@ -65,8 +65,8 @@ struct WaterGridViews
     scalar_view m_w_i;  //!< water mass, kg
     vector_view mv_w_i; //!< water momentum, kg m/s
     vector_view f_w_i;  //!< water force (weight + pressure gradient), N
-    scalar_view q_i;    //!< drag coefficient sum N (nS)^2 mu / (k k_rel) V, kg/s
-    vector_view v_w_i;  //!< water velocity at the end of the step, m/s
+    scalar_view q_i;   //!< drag coefficient sum N (nS)^2 mu / (k k_rel) V, kg/s
+    vector_view v_w_i; //!< water velocity at the end of the step, m/s
     vector_view dv_w_i; //!< water velocity increment of the step, m/s
     //! Bit mask: node_fix_x / node_fix_y tie that water velocity component
     //! to the solid's (impermeable).

@@ -75,9 +75,9 @@ inline MaterialParams elasticParams( const double youngs_modulus,
 //! Pore-water constants (two-phase scenes), SI.
 struct WaterParams
 {
-    double density = 1000.0;      //!< rho_w, kg/m^3
-    double bulk_modulus = 2.2e9;  //!< K_w, Pa
-    double viscosity = 1.0e-3;    //!< mu_w, Pa s
+    double density = 1000.0;     //!< rho_w, kg/m^3
+    double bulk_modulus = 2.2e9; //!< K_w, Pa
+    double viscosity = 1.0e-3;   //!< mu_w, Pa s
 };
 
 //! Fixed-capacity table of materials, indexed by a point's material id.

@@ -31,7 +31,7 @@ struct RetentionParams
     double rho_w_g = 9810.0;   //!< unit weight of water for the head, N/m^3
     //! Linear: S = s_sat - (s_sat - s_res) min(s / range, 1), s = -p_w
     double suction_range_pa = 1.0;
-    double k_rel_min = 0.0;    //!< floor on k_rel (Liakopoulos: e.g. 1e-4)
+    double k_rel_min = 0.0; //!< floor on k_rel (Liakopoulos: e.g. 1e-4)
 };
 
 } // namespace physics

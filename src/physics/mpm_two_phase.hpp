@@ -37,12 +37,10 @@ struct TwoPhaseNodalUpdate
         return ( v > 0.0 ) - ( v < 0.0 );
     }
 
-    KOKKOS_INLINE_FUNCTION Result operator()( const double m_s, const double m_w,
-                                              const double mv_s,
-                                              const double mv_w, double f_m,
-                                              double f_w, const double q,
-                                              const bool solid_fixed,
-                                              const bool water_tied ) const
+    KOKKOS_INLINE_FUNCTION Result
+    operator()( const double m_s, const double m_w, const double mv_s,
+                const double mv_w, double f_m, double f_w, const double q,
+                const bool solid_fixed, const bool water_tied ) const
     {
         namespace KE = Kokkos::Experimental;
         const double v_s = mv_s / m_s;
@@ -106,8 +104,8 @@ KOKKOS_INLINE_FUNCTION double dragCoefficient( const double n, const double S,
 template <class RetentionFunction>
 KOKKOS_INLINE_FUNCTION double
 porePressureIncrement( const RetentionFunction& retention, const double p_w,
-                       const double S, const double n, const double bulk_modulus,
-                       const double volume_change )
+                       const double S, const double n,
+                       const double bulk_modulus, const double volume_change )
 {
     namespace KE = Kokkos::Experimental;
     // volume_change = -dt (n S div v_w + (1 - n) S div v_s), dimensionless.
@@ -143,16 +141,15 @@ porePressureIncrement( const RetentionFunction& retention, const double p_w,
   and the pore-water wave sqrt(S / ((dS/dp + S/K_w) rho_w)); returns the
   larger.
 */
-KOKKOS_INLINE_FUNCTION double twoPhaseWaveSpeed( const double constrained_modulus,
-                                                 const double rho_m,
-                                                 const double rho_w, const double n,
-                                                 const double S, const double dS_dp,
-                                                 const double bulk_modulus )
+KOKKOS_INLINE_FUNCTION double
+twoPhaseWaveSpeed( const double constrained_modulus, const double rho_m,
+                   const double rho_w, const double n, const double S,
+                   const double dS_dp, const double bulk_modulus )
 {
     namespace KE = Kokkos::Experimental;
     const double compressibility = dS_dp + S / bulk_modulus;
-    const double c_mixture =
-        KE::sqrt( ( constrained_modulus + S * S / ( n * compressibility ) ) / rho_m );
+    const double c_mixture = KE::sqrt(
+        ( constrained_modulus + S * S / ( n * compressibility ) ) / rho_m );
     const double c_water = KE::sqrt( S / ( compressibility * rho_w ) );
     return c_mixture > c_water ? c_mixture : c_water;
 }

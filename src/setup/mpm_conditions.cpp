@@ -36,9 +36,11 @@ std::vector<bool> selectPoints( const PointSelection& selection,
     const std::size_t n = status.size();
     std::vector<bool> picked( n, false );
     const double h = grid.cell_size_m;
-    auto cellOf = [&]( std::size_t p ) {
+    auto cellOf = [&]( std::size_t p )
+    {
         return std::make_pair(
-            static_cast<int>( std::floor( ( x[2 * p] - grid.origin_m[0] ) / h ) ),
+            static_cast<int>(
+                std::floor( ( x[2 * p] - grid.origin_m[0] ) / h ) ),
             static_cast<int>(
                 std::floor( ( x[2 * p + 1] - grid.origin_m[1] ) / h ) ) );
     };
@@ -91,7 +93,8 @@ std::vector<int> waterNodeFlags( const GridConfig& grid,
         selector.constrains_solid = true;
         const std::vector<int> selected = nodeFlags( grid, { selector } );
         int tie = node_fixed;
-        if ( bc.where == BoundarySelector::Left || bc.where == BoundarySelector::Right )
+        if ( bc.where == BoundarySelector::Left ||
+             bc.where == BoundarySelector::Right )
             tie = node_fix_x;
         else if ( bc.where == BoundarySelector::Bottom ||
                   bc.where == BoundarySelector::Top )

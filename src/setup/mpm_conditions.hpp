@@ -23,8 +23,9 @@ std::vector<bool> selectPoints( const PointSelection& selection,
 //! Water tie flags (NodeFlag bits) of every node, flat index i * (ny + 1) + j:
 //! grid edges are impermeable (normal water velocity = solid's) unless a
 //! boundary drains them; an impermeable below_polyline boundary ties both.
-std::vector<int> waterNodeFlags( const GridConfig& grid,
-                                 const std::vector<BoundaryConfig>& boundaries );
+std::vector<int>
+waterNodeFlags( const GridConfig& grid,
+                const std::vector<BoundaryConfig>& boundaries );
 
 } // namespace mpm
 

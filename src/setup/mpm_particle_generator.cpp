@@ -64,7 +64,8 @@ InitialPoints generatePoints( const CaseConfig& config )
                 {
                     const Point2 p = { grid.origin_m[0] + ( ci + xi[a] ) * h,
                                        grid.origin_m[1] + ( cj + xi[b] ) * h };
-                    for ( std::size_t body_id = 0; body_id < config.bodies.size(); ++body_id )
+                    for ( std::size_t body_id = 0;
+                          body_id < config.bodies.size(); ++body_id )
                     {
                         const BodyConfig& body = config.bodies[body_id];
                         if ( !geometry::pointInPolygon( body.polygon_m, p ) )

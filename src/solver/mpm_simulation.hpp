@@ -80,7 +80,8 @@ class Simulation
             water_particles = WaterParticleViews<ExecSpace>( points.size() );
             water_grid = WaterGridViews<ExecSpace>( grid.geometry );
         }
-        initialiseParticles( config, points, particles, water_particles, water );
+        initialiseParticles( config, points, particles, water_particles,
+                             water );
         if ( !config.stages.empty() )
             applyStage( config.stages.front() );
     }
@@ -91,7 +92,8 @@ class Simulation
     void applyStage( const StageConfig& stage )
     {
         materials = makeMaterialTable( stage.materials );
-        copyNodeFlags( nodeFlags( grid_config, stage.boundaries ), grid.flags_i );
+        copyNodeFlags( nodeFlags( grid_config, stage.boundaries ),
+                       grid.flags_i );
         if ( twoPhase() )
             copyNodeFlags( waterNodeFlags( grid_config, stage.boundaries ),
                            water_grid.flags_w_i );
@@ -146,7 +148,8 @@ class Simulation
             return;
         std::ostringstream reason;
         reason << "is unstable: "
-               << unstableQuantity( particles, water_particles, bad, speed_limit,
+               << unstableQuantity( particles, water_particles, bad,
+                                    speed_limit,
                                     solver.instability_speed_factor )
                << "\n  time step " << dt << " s against the CFL limit "
                << limit.dt_limit << " s (largest wave speed "

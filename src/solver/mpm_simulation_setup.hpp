@@ -64,9 +64,10 @@ void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
         x_h( p, 1 ) = points.x[2 * p + 1];
         vol_h( p ) = points.vol[p];
         material_h( p ) = points.material[p];
-        m_h( p ) = two_phase ? ( 1.0 - material.porosity ) *
-                                   material.solid_density_kg_per_m3 * points.vol[p]
-                             : material.density_kg_per_m3 * points.vol[p];
+        m_h( p ) = two_phase
+                       ? ( 1.0 - material.porosity ) *
+                             material.solid_density_kg_per_m3 * points.vol[p]
+                       : material.density_kg_per_m3 * points.vol[p];
         id_h( p ) = p;
         status_h( p ) = point_active;
     }
@@ -89,9 +90,9 @@ void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
     for ( int p = 0; p < points.size(); ++p )
     {
         const BodyConfig& body = config.bodies[points.body[p]];
-        const double p_w = body.initial_pore_pressure_pa +
-                           body.initial_pore_pressure_gradient_pa_per_m *
-                               points.x[2 * p + 1];
+        const double p_w =
+            body.initial_pore_pressure_pa +
+            body.initial_pore_pressure_gradient_pa_per_m * points.x[2 * p + 1];
         const physics::MaterialParams& params = table[points.material[p]];
         physics::RetentionState state{ 1.0, 0.0, 1.0 };
         if ( config.analysis == AnalysisType::Unsaturated )
@@ -131,12 +132,13 @@ struct StageConditions
 
     //! Assigns the stage's conditions to the points.
     void apply( const StageConfig& stage, const ParticleViews<ExecSpace>& pv,
-                const WaterParticleViews<ExecSpace>& wv, const GridConfig& grid )
+                const WaterParticleViews<ExecSpace>& wv,
+                const GridConfig& grid )
     {
         pore_pressures = stage.pore_pressures;
         loads = stage.loads;
-        const auto x_h = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
-                                                              pv.x_p );
+        const auto x_h =
+            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
         const auto status_h = Kokkos::create_mirror_view_and_copy(
             Kokkos::HostSpace(), pv.status_p );
         const std::vector<double> x( x_h.data(), x_h.data() + x_h.span() );
@@ -149,7 +151,8 @@ struct StageConditions
         load_counts.assign( loads.size(), 0 );
         for ( std::size_t l = 0; l < loads.size(); ++l )
         {
-            const auto picked = selectPoints( loads[l].points, x, status, grid );
+            const auto picked =
+                selectPoints( loads[l].points, x, status, grid );
             for ( std::size_t p = 0; p < picked.size(); ++p )
                 if ( picked[p] )
                     load_h( p ) = static_cast<int>( l );
@@ -184,8 +187,9 @@ struct StageConditions
     {
         auto p_h = Kokkos::create_mirror_view( prescribed_p_w );
         for ( std::size_t c = 0; c < pore_pressures.size(); ++c )
-            p_h( c ) = pore_pressures[c].pressure_pa *
-                       evaluateTimeFunction( pore_pressures[c].time_function, t );
+            p_h( c ) =
+                pore_pressures[c].pressure_pa *
+                evaluateTimeFunction( pore_pressures[c].time_function, t );
         Kokkos::deep_copy( prescribed_p_w, p_h );
         auto f_h = Kokkos::create_mirror_view( load_force );
         for ( std::size_t l = 0; l < loads.size(); ++l )
