@@ -1,4 +1,5 @@
 #include <io/mpm_case_materials.hpp>
+#include <io/mpm_case_retention.hpp>
 
 #include <array>
 #include <optional>
@@ -12,37 +13,119 @@ namespace Impl
 namespace
 {
 //---------------------------------------------------------------------------//
-// Material parameters: key, allowed range on its own, unit, model.
+//! Which analyses use a material parameter.
+enum class Phase
+{
+    Any,
+    DryOnly,     //!< bulk density: the two-phase mixture density is derived
+    TwoPhaseOnly //!< grain density, porosity, permeability
+};
+
+// Material parameters: key, allowed range on its own, unit, model, phase.
 struct ParamSpec
 {
     const char* key;
     Range range;
     const char* unit;
     bool mohr_coulomb_only;
+    Phase phase;
+    bool required; //!< for its model and phase
     double MaterialConfig::*member;
 };
 
 const std::array<ParamSpec, NumMaterialParams>& paramSpecs()
 {
+    const Phase any = Phase::Any;
     static const std::array<ParamSpec, NumMaterialParams> specs = { {
         { "density_kg_per_m3", Range::above( 0.0 ), "kg/m^3", false,
-          &MaterialConfig::density_kg_per_m3 },
-        { "youngs_modulus_pa", Range::above( 0.0 ), "Pa", false,
+          Phase::DryOnly, true, &MaterialConfig::density_kg_per_m3 },
+        { "youngs_modulus_pa", Range::above( 0.0 ), "Pa", false, any, true,
           &MaterialConfig::youngs_modulus_pa },
         { "poisson_ratio", Range::interval( 0.0, false, 0.5, true ), "", false,
-          &MaterialConfig::poisson_ratio },
-        { "cohesion_peak_pa", Range::atLeast( 0.0 ), "Pa", true,
+          any, true, &MaterialConfig::poisson_ratio },
+        { "cohesion_peak_pa", Range::atLeast( 0.0 ), "Pa", true, any, true,
           &MaterialConfig::cohesion_peak_pa },
-        { "cohesion_residual_pa", Range::atLeast( 0.0 ), "Pa", true,
+        { "cohesion_residual_pa", Range::atLeast( 0.0 ), "Pa", true, any, false,
           &MaterialConfig::cohesion_residual_pa },
-        { "softening_modulus_pa", Range::atMost( 0.0 ), "Pa", true,
+        { "softening_modulus_pa", Range::atMost( 0.0 ), "Pa", true, any, false,
           &MaterialConfig::softening_modulus_pa },
         { "friction_angle_deg", Range::interval( 0.0, true, 90.0, true ),
-          "degrees", true, &MaterialConfig::friction_angle_deg },
+          "degrees", true, any, true, &MaterialConfig::friction_angle_deg },
         { "dilation_angle_deg", Range::interval( 0.0, false, 90.0, true ),
-          "degrees", true, &MaterialConfig::dilation_angle_deg },
+          "degrees", true, any, false, &MaterialConfig::dilation_angle_deg },
+        { "solid_density_kg_per_m3", Range::above( 0.0 ), "kg/m^3", false,
+          Phase::TwoPhaseOnly, true, &MaterialConfig::solid_density_kg_per_m3 },
+        { "porosity", Range::interval( 0.0, true, 1.0, true ), "", false,
+          Phase::TwoPhaseOnly, true, &MaterialConfig::porosity },
+        { "permeability_m2", Range::above( 0.0 ), "m^2 (intrinsic)", false,
+          Phase::TwoPhaseOnly, true, &MaterialConfig::permeability_m2 },
     } };
     return specs;
+}
+
+//---------------------------------------------------------------------------//
+// Whether a parameter is used by the analysis (any, if it is unknown).
+bool usedBy( const Phase phase, const Analysis& analysis )
+{
+    if ( !analysis || phase == Phase::Any )
+        return true;
+    return ( phase == Phase::TwoPhaseOnly ) == isTwoPhase( analysis );
+}
+
+//---------------------------------------------------------------------------//
+// Report a parameter given for an analysis that does not use it.
+void wrongPhase( const ParamSpec& spec, TableReader& reader )
+{
+    const std::string text =
+        spec.phase == Phase::DryOnly
+            ? "not used in two-phase analyses: give solid_density_kg_per_m3 "
+              "and porosity (the mixture density follows from them and the "
+              "water density)"
+            : twoPhaseOnlyText();
+    reader.diag().keyError( *reader.find( spec.key ),
+                            reader.keyPath( spec.key ), text );
+}
+
+//---------------------------------------------------------------------------//
+// Why a missing parameter is required, for the message.
+std::string missingNote( const ParamSpec& spec, const TableReader& reader )
+{
+    if ( spec.mohr_coulomb_only )
+        return " (required for model mohr_coulomb)";
+    if ( spec.phase == Phase::TwoPhaseOnly )
+        return " (required for two-phase analyses)";
+    if ( spec.phase == Phase::DryOnly )
+        for ( const auto& other : paramSpecs() )
+            if ( other.phase == Phase::TwoPhaseOnly &&
+                 reader.find( other.key ) )
+                return " (the bulk density of a dry analysis; for a two-phase "
+                       "analysis set case.analysis = \"saturated\" or "
+                       "\"unsaturated\")";
+    return "";
+}
+
+//---------------------------------------------------------------------------//
+// Read a retention table given in this table over the draft's law.
+void readRetentionTable( TableReader& reader, MaterialDraft& draft,
+                         const Analysis& analysis )
+{
+    const toml::node* node = reader.find( "retention" );
+    if ( !node )
+        return;
+    if ( analysis && *analysis != AnalysisType::Unsaturated )
+    {
+        reader.diag().keyError(
+            *node, reader.keyPath( "retention" ),
+            std::string( "only for case.analysis = \"unsaturated\" (a "
+                         "soil-water retention law); this case is " ) +
+                ( isDry( analysis ) ? "dry" : "saturated (S = 1)" ) );
+        return;
+    }
+    draft.retention_given = true;
+    draft.retention.reset();
+    if ( const auto* table = reader.subTable( "retention", Need::Optional ) )
+        draft.retention = readRetention( *table, reader.keyPath( "retention" ),
+                                         reader.diag() );
 }
 
 const std::vector<std::string> model_names = { "linear_elastic",
@@ -85,13 +168,14 @@ std::vector<std::string> materialKeys()
     std::vector<std::string> keys = { "name", "model" };
     for ( const auto& spec : paramSpecs() )
         keys.push_back( spec.key );
+    keys.push_back( "retention" );
     return keys;
 }
 
 //---------------------------------------------------------------------------//
 // Read model and parameters given in one table over the draft's values.
 void readMaterialValues( TableReader& reader, MaterialDraft& draft,
-                         const Need model_need )
+                         const Need model_need, const Analysis& analysis )
 {
     const std::size_t errors_before = reader.diag().count();
     for ( auto& p : draft.params )
@@ -104,19 +188,27 @@ void readMaterialValues( TableReader& reader, MaterialDraft& draft,
     for ( int p = 0; p < NumMaterialParams; ++p )
     {
         const ParamSpec& spec = paramSpecs()[p];
+        if ( !usedBy( spec.phase, analysis ) )
+        {
+            if ( reader.find( spec.key ) )
+                wrongPhase( spec, reader );
+            continue;
+        }
         const auto value =
             reader.number( spec.key, spec.range, spec.unit, Need::Optional );
         if ( value )
             draft.params[p] = GivenValue{ *value, reader.find( spec.key ),
                                           reader.keyPath( spec.key ), true };
     }
+    readRetentionTable( reader, draft, analysis );
     draft.valid = draft.valid && reader.diag().count() == errors_before;
 }
 
 //---------------------------------------------------------------------------//
 // The material described by a draft, or nothing after reporting errors.
 std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
-                                              TableReader& reader )
+                                              TableReader& reader,
+                                              const Analysis& analysis )
 {
     if ( !draft.model )
         return std::nullopt;
@@ -130,6 +222,8 @@ std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
     {
         const ParamSpec& spec = paramSpecs()[p];
         const auto& given = draft.params[p];
+        if ( !usedBy( spec.phase, analysis ) )
+            continue; // reported when read
         if ( spec.mohr_coulomb_only && !mc )
         {
             // Mohr-Coulomb parameters inherited by a linear elastic stage
@@ -146,14 +240,18 @@ std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
             m.*spec.member = given->value;
         else if ( reader.find( spec.key ) )
             continue; // present but invalid: already reported
-        else if ( p <= ParamPoissonRatio || p == ParamCohesionPeak ||
-                  p == ParamFrictionAngle )
+        else if ( spec.required && ( spec.phase == Phase::Any || analysis ) )
             reader.missing( spec.key,
                             Impl::numberExpectation( spec.range, spec.unit ) +
-                                ( spec.mohr_coulomb_only
-                                      ? " (required for model mohr_coulomb)"
-                                      : "" ) );
+                                missingNote( spec, reader ) );
     }
+    if ( analysis == AnalysisType::Unsaturated && !draft.retention_given )
+        reader.missing( "retention",
+                        "a table [materials.retention] with the soil-water "
+                        "retention law (required for case.analysis = "
+                        "\"unsaturated\")" );
+    if ( draft.retention )
+        m.retention = *draft.retention;
     if ( diag.count() != errors_before || !draft.valid )
         return std::nullopt;
 

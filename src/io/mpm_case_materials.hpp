@@ -1,6 +1,7 @@
 #ifndef MPM_CASE_MATERIALS_HPP
 #define MPM_CASE_MATERIALS_HPP
 
+#include <io/mpm_case_analysis.hpp>
 #include <io/mpm_case_config.hpp>
 #include <io/mpm_toml_access.hpp>
 
@@ -29,6 +30,9 @@ enum Param
     ParamSofteningModulus,
     ParamFrictionAngle,
     ParamDilationAngle,
+    ParamSolidDensity,
+    ParamPorosity,
+    ParamPermeability,
     NumMaterialParams
 };
 
@@ -48,7 +52,11 @@ struct MaterialDraft
     std::string name;
     std::optional<ModelType> model;
     std::array<std::optional<GivenValue>, NumMaterialParams>
-        params;        //!< by Param
+        params; //!< by Param
+    //! The retention law (unsaturated analyses): given at some level,
+    //! and its value if it was valid. A stage override replaces it whole.
+    bool retention_given = false;
+    std::optional<RetentionConfig> retention;
     bool valid = true; //!< false once a value had a wrong type or range
 };
 
@@ -59,20 +67,23 @@ std::vector<std::string> materialKeys();
 //---------------------------------------------------------------------------//
 /*!
   \brief Read the model and the parameters given in one table over the
-  draft's values (checking each value's type and own range). Values already
-  in the draft are marked as inherited.
+  draft's values (checking each value's type and own range, and that the
+  key is used by the analysis). Values already in the draft are marked as
+  inherited. A retention table replaces the draft's law.
 */
 void readMaterialValues( TableReader& reader, MaterialDraft& draft,
-                         Need model_need );
+                         Need model_need, const Analysis& analysis );
 
 //---------------------------------------------------------------------------//
 /*!
   \brief The material described by a draft, with defaults applied, after
-  checking required keys, keys only for mohr_coulomb and residual <= peak,
-  dilation <= friction; or nothing after reporting errors to the reader.
+  checking required keys (by model and analysis), keys only for
+  mohr_coulomb and residual <= peak, dilation <= friction; or nothing after
+  reporting errors to the reader.
 */
 std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
-                                              TableReader& reader );
+                                              TableReader& reader,
+                                              const Analysis& analysis );
 
 } // namespace Impl
 } // namespace mpm

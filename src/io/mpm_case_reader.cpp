@@ -1,3 +1,5 @@
+#include <io/mpm_case_analysis.hpp>
+#include <io/mpm_case_conditions.hpp>
 #include <io/mpm_case_materials.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_case_shapes.hpp>
@@ -39,10 +41,11 @@ class CaseParser
     void parse( const toml::table& root_table )
     {
         TableReader root( root_table, "", _diag );
-        root.checkKeys( { "case", "grid", "particles", "materials", "bodies",
-                          "boundaries", "solver", "stages" },
+        root.checkKeys( { "case", "water", "grid", "particles", "materials",
+                          "bodies", "boundaries", "solver", "stages" },
                         "the top level of a case file" );
         parseCaseTable( root );
+        parseWater( root );
         parseGrid( root );
         if ( const auto* t = root.subTable( "particles", Need::Optional ) )
         {
@@ -56,7 +59,8 @@ class CaseParser
         parseBodies( root );
         if ( const auto* arr = root.tableArray( "boundaries", Need::Optional,
                                                 "[[boundaries]]" ) )
-            _config.boundaries = parseBoundaries( *arr, "boundaries" );
+            _config.boundaries =
+                Impl::readBoundaries( *arr, "boundaries", _analysis, _diag );
         parseSolver( root );
         parseStages( root );
     }
@@ -81,7 +85,9 @@ class CaseParser
         if ( !t )
             return;
         TableReader r( *t, "case", _diag );
-        r.checkKeys( { "name", "description" }, "[case]" );
+        const std::vector<std::string> keys = { "name", "description",
+                                                "analysis" };
+        r.checkKeys( keys, "[case]" );
         if ( const auto name = r.string( "name", Need::Required ) )
         {
             const bool valid = std::all_of(
@@ -99,6 +105,47 @@ class CaseParser
         }
         _config.description =
             r.string( "description", Need::Optional, true ).value_or( "" );
+        if ( const auto a =
+                 r.choice( "analysis", Impl::analysisNames(), Need::Optional ) )
+            _analysis = static_cast<AnalysisType>( *a );
+        else if ( r.find( "analysis" ) )
+            _analysis.reset(); // invalid: skip the checks that depend on it
+        else
+            for ( auto&& entry : *t )
+                if ( Impl::closestWord( std::string( entry.first.str() ),
+                                        keys ) == "analysis" )
+                    _analysis.reset(); // misspelt key: as invalid
+        _config.analysis = _analysis.value_or( AnalysisType::Dry );
+    }
+
+    void parseWater( TableReader& root )
+    {
+        const toml::node* node = root.find( "water" );
+        if ( !node )
+            return;
+        if ( Impl::isDry( _analysis ) )
+        {
+            _diag.keyError( *node, "water", Impl::twoPhaseOnlyText() );
+            return;
+        }
+        const auto* t = root.subTable( "water", Need::Optional );
+        if ( !t )
+            return;
+        TableReader r( *t, "water", _diag );
+        r.checkKeys(
+            { "density_kg_per_m3", "bulk_modulus_pa", "viscosity_pa_s" },
+            "[water]" );
+        WaterConfig& w = _config.water;
+        w.density_kg_per_m3 =
+            r.number( "density_kg_per_m3", Range::above( 0.0 ), "kg/m^3",
+                      Need::Optional )
+                .value_or( w.density_kg_per_m3 );
+        w.bulk_modulus_pa = r.number( "bulk_modulus_pa", Range::above( 0.0 ),
+                                      "Pa", Need::Optional )
+                                .value_or( w.bulk_modulus_pa );
+        w.viscosity_pa_s = r.number( "viscosity_pa_s", Range::above( 0.0 ),
+                                     "Pa s", Need::Optional )
+                               .value_or( w.viscosity_pa_s );
     }
 
     void parseGrid( TableReader& root )
@@ -169,8 +216,8 @@ class CaseParser
                 else
                     first_path[*name] = path;
             }
-            readMaterialValues( r, draft, Need::Required );
-            const auto material = finishMaterial( draft, r );
+            readMaterialValues( r, draft, Need::Required, _analysis );
+            const auto material = finishMaterial( draft, r, _analysis );
             if ( material )
                 _config.materials.push_back( *material );
             _drafts.push_back( draft );
@@ -201,7 +248,9 @@ class CaseParser
         {
             const std::string path = "bodies[" + std::to_string( k ) + "]";
             TableReader r( *arr->get( k )->as_table(), path, _diag );
-            r.checkKeys( { "material", "polygon_m" }, "[[bodies]]" );
+            r.checkKeys( { "material", "polygon_m", "initial_pore_pressure_pa",
+                           "initial_pore_pressure_gradient_pa_per_m" },
+                         "[[bodies]]" );
             BodyConfig body;
             if ( const auto name = r.string( "material", Need::Required ) )
             {
@@ -219,48 +268,20 @@ class CaseParser
                     _grid_ok ? &_config.grid : nullptr, _diag );
                 body.polygon_m = *polygon;
             }
+            if ( !Impl::rejectIfDry( r, "initial_pore_pressure_pa",
+                                     _analysis ) )
+                body.initial_pore_pressure_pa =
+                    r.number( "initial_pore_pressure_pa", Range::any(),
+                              "Pa (p_w at y = 0)", Need::Optional )
+                        .value_or( 0.0 );
+            if ( !Impl::rejectIfDry(
+                     r, "initial_pore_pressure_gradient_pa_per_m", _analysis ) )
+                body.initial_pore_pressure_gradient_pa_per_m =
+                    r.number( "initial_pore_pressure_gradient_pa_per_m",
+                              Range::any(), "Pa/m (dp_w/dy)", Need::Optional )
+                        .value_or( 0.0 );
             _config.bodies.push_back( body );
         }
-    }
-
-    std::vector<BoundaryConfig> parseBoundaries( const toml::array& arr,
-                                                 const std::string& prefix )
-    {
-        std::vector<BoundaryConfig> result;
-        for ( std::size_t k = 0; k < arr.size(); ++k )
-        {
-            const std::string path = prefix + "[" + std::to_string( k ) + "]";
-            TableReader r( *arr.get( k )->as_table(), path, _diag );
-            r.checkKeys( { "where", "condition", "polyline_m" },
-                         prefix == "boundaries" ? "[[boundaries]]"
-                                                : "[[stages.boundaries]]" );
-            BoundaryConfig bc;
-            const auto where = r.choice(
-                "where", { "left", "right", "bottom", "top", "below_polyline" },
-                Need::Required );
-            const auto condition = r.choice(
-                "condition", { "fixed", "fix_x", "fix_y" }, Need::Required );
-            if ( where )
-                bc.where = static_cast<BoundarySelector>( *where );
-            if ( condition )
-                bc.condition = static_cast<BoundaryCondition>( *condition );
-            if ( where && bc.where == BoundarySelector::BelowPolyline )
-            {
-                if ( auto line =
-                         r.points( "polyline_m", 2, "m", Need::Required ) )
-                {
-                    Impl::checkPolyline( *line, *r.find( "polyline_m" ),
-                                         path + ".polyline_m", _diag );
-                    bc.polyline_m = *line;
-                }
-            }
-            else if ( where && r.find( "polyline_m" ) )
-                _diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
-                                "only for where = \"below_polyline\"; remove "
-                                "it or change 'where'" );
-            result.push_back( bc );
-        }
-        return result;
     }
 
     void parseSolver( TableReader& root )
@@ -311,7 +332,8 @@ class CaseParser
             r.checkKeys( { "name", "type", "gravity_m_per_s2", "damping",
                            "duration_s", "ke_ratio_tolerance",
                            "snapshot_interval_s", "reset_displacement",
-                           "materials", "boundaries" },
+                           "materials", "boundaries", "pore_pressures",
+                           "loads" },
                          "[[stages]]" );
             StageConfig stage;
             if ( const auto name = r.string( "name", Need::Required ) )
@@ -363,7 +385,17 @@ class CaseParser
             stage.boundaries = _config.boundaries;
             if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
                                                "[[stages.boundaries]]" ) )
-                stage.boundaries = parseBoundaries( *b, path + ".boundaries" );
+                stage.boundaries = Impl::readBoundaries(
+                    *b, path + ".boundaries", _analysis, _diag );
+            if ( !Impl::rejectIfDry( r, "pore_pressures", _analysis ) )
+                if ( const auto* p =
+                         r.tableArray( "pore_pressures", Need::Optional,
+                                       "[[stages.pore_pressures]]" ) )
+                    stage.pore_pressures = Impl::readPorePressures(
+                        *p, path + ".pore_pressures", _diag );
+            if ( const auto* l = r.tableArray( "loads", Need::Optional,
+                                               "[[stages.loads]]" ) )
+                stage.loads = Impl::readLoads( *l, path + ".loads", _diag );
             _config.stages.push_back( stage );
         }
     }
@@ -399,10 +431,10 @@ class CaseParser
                                 "name selects the material ('" +
                                     name + "')" );
             MaterialDraft draft = _drafts[id];
-            readMaterialValues( r, draft, Need::Optional );
+            readMaterialValues( r, draft, Need::Optional, _analysis );
             if ( !_materials_ok )
                 continue;
-            if ( const auto material = finishMaterial( draft, r ) )
+            if ( const auto material = finishMaterial( draft, r, _analysis ) )
                 stage.materials[id] = *material;
         }
     }
@@ -411,6 +443,7 @@ class CaseParser
     CaseConfig& _config;
     bool _grid_ok = false;
     bool _materials_ok = true;
+    Impl::Analysis _analysis = AnalysisType::Dry;
     std::vector<MaterialDraft> _drafts;
     std::vector<std::string> _material_names;
 };

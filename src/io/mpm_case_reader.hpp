@@ -31,8 +31,9 @@ class CaseError : public std::runtime_error
   \brief Read and validate a TOML case file (schema: docs/case-file.md).
 
   Every key is checked (unknown keys, types, ranges, references between
-  materials, bodies and stages, polygon validity, grid extent) before the
-  configuration is returned. Derived data are filled in:
+  materials, bodies and stages, polygon validity, grid extent, the keys
+  allowed or required by case.analysis) before the configuration is
+  returned. Derived data are filled in:
   BodyConfig::material_id and, per stage, the effective materials (case
   materials with the stage's overrides applied) and boundaries (the case
   boundaries unless the stage gives its own list).

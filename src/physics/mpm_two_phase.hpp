@@ -19,7 +19,9 @@ namespace physics
   with the drag coefficient Q (kg/s) at the new time, so no permeability
   limits the step. A fixed solid sets v_s' = 0; an impermeable boundary
   ties v_w' = v_s'; the remaining scalar equation is then solved.
-  Local damping reduces each force by damping |F| along its phase velocity.
+  Local damping reduces the mixture force by damping |F_m| along v_s; the
+  water force is not damped (the drag already dissipates, and damping it
+  would slow consolidation).
 */
 struct TwoPhaseNodalUpdate
 {
@@ -48,7 +50,6 @@ struct TwoPhaseNodalUpdate
         const bool has_water = m_w > 1.0e-12 * m_s;
         const double v_w = has_water ? mv_w / m_w : v_s;
         f_m -= damping * KE::fabs( f_m ) * sign( v_s );
-        f_w -= damping * KE::fabs( f_w ) * sign( v_w );
 
         const double a_w = m_w / dt;
         const double a_s = m_s / dt;

@@ -1,0 +1,239 @@
+#include <io/mpm_case_conditions.hpp>
+#include <io/mpm_case_shapes.hpp>
+#include <io/mpm_toml_access.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+namespace
+{
+//---------------------------------------------------------------------------//
+std::string indexed( const std::string& path, const std::size_t k )
+{
+    return path + "[" + std::to_string( k ) + "]";
+}
+
+//---------------------------------------------------------------------------//
+// box_m = [[x_min, y_min], [x_max, y_max]], or nothing after an error.
+std::optional<std::array<Point2, 2>> readBox( TableReader& r )
+{
+    const std::string expected = "a box [[x_min, y_min], [x_max, y_max]] in m";
+    const toml::node* node = r.node( "box_m", Need::Required,
+                                     expected + " (required for where = "
+                                                "\"box\")" );
+    if ( !node )
+        return std::nullopt;
+    const std::string path = r.keyPath( "box_m" );
+    const toml::array* arr = node->as_array();
+    if ( !arr || arr->size() != 2 || !arr->get( 0 )->is_array() ||
+         !arr->get( 1 )->is_array() )
+    {
+        r.diag().mismatch( *node, path, expected );
+        return std::nullopt;
+    }
+    const auto lo =
+        readPoint( *arr->get( 0 ), indexed( path, 0 ), "m", r.diag() );
+    const auto hi =
+        readPoint( *arr->get( 1 ), indexed( path, 1 ), "m", r.diag() );
+    if ( !lo || !hi )
+        return std::nullopt;
+    if ( !( ( *hi )[0] >= ( *lo )[0] && ( *hi )[1] >= ( *lo )[1] ) )
+    {
+        r.diag().keyError(
+            *arr->get( 1 ), indexed( path, 1 ),
+            "expected the upper-right corner [x_max, y_max] with x_max >= " +
+                formatNumber( ( *lo )[0] ) + " m and y_max >= " +
+                formatNumber( ( *lo )[1] ) + " m (the lower-left corner " +
+                indexed( path, 0 ) + "), found [" + formatNumber( ( *hi )[0] ) +
+                ", " + formatNumber( ( *hi )[1] ) + "] m" );
+        return std::nullopt;
+    }
+    return std::array<Point2, 2>{ *lo, *hi };
+}
+
+//---------------------------------------------------------------------------//
+// where (and box_m) of a condition on material points.
+PointSelection readSelection( TableReader& r )
+{
+    PointSelection selection;
+    const auto where =
+        r.choice( "where", { "box", "surface_cells" }, Need::Required );
+    if ( where )
+        selection.kind = static_cast<PointSelection::Kind>( *where );
+    if ( where && selection.kind == PointSelection::Kind::Box )
+    {
+        if ( const auto box = readBox( r ) )
+            selection.box_m = *box;
+    }
+    else if ( where && r.find( "box_m" ) )
+        r.diag().keyError( *r.find( "box_m" ), r.keyPath( "box_m" ),
+                           "only for where = \"box\"; remove it or change "
+                           "'where'" );
+    return selection;
+}
+
+//---------------------------------------------------------------------------//
+// time_function = [[t_s, factor], ...]: optional, empty if not given.
+TimeFunction readTimeFunction( TableReader& r )
+{
+    const std::string expected =
+        "an array of at least one pair [[t_s, factor], ...] (stage time in "
+        "s, strictly increasing, and a factor)";
+    const toml::node* node = r.find( "time_function" );
+    if ( !node )
+        return {};
+    const std::string path = r.keyPath( "time_function" );
+    const toml::array* arr = node->as_array();
+    if ( !arr || arr->empty() )
+    {
+        r.diag().mismatch( *node, path, expected );
+        return {};
+    }
+    TimeFunction function;
+    for ( std::size_t k = 0; k < arr->size(); ++k )
+    {
+        const toml::node& pair_node = *arr->get( k );
+        const toml::array* pair = pair_node.as_array();
+        if ( !pair || pair->size() != 2 )
+        {
+            r.diag().mismatch( pair_node, indexed( path, k ),
+                               "a pair [t_s, factor]" );
+            return {};
+        }
+        const auto t = readNumber( *pair->get( 0 ), indexed( path, k ) + "[0]",
+                                   Range::atLeast( 0.0 ), "s", r.diag() );
+        const auto f = readNumber( *pair->get( 1 ), indexed( path, k ) + "[1]",
+                                   Range::any(), "", r.diag() );
+        if ( !t || !f )
+            return {};
+        if ( !function.empty() && !( *t > function.back()[0] ) )
+        {
+            r.diag().keyError(
+                *pair->get( 0 ), indexed( path, k ) + "[0]",
+                "expected a time > " + formatNumber( function.back()[0] ) +
+                    " s (the times of a time function must increase "
+                    "strictly), found " +
+                    formatNumber( *t ) );
+            return {};
+        }
+        function.push_back( { *t, *f } );
+    }
+    return function;
+}
+
+} // namespace
+
+//---------------------------------------------------------------------------//
+std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
+                                            const std::string& prefix,
+                                            const Analysis& analysis,
+                                            Diagnostics& diag )
+{
+    std::vector<BoundaryConfig> result;
+    for ( std::size_t k = 0; k < array.size(); ++k )
+    {
+        const std::string path = indexed( prefix, k );
+        TableReader r( *array.get( k )->as_table(), path, diag );
+        r.checkKeys( { "where", "condition", "hydraulic", "polyline_m" },
+                     prefix == "boundaries" ? "[[boundaries]]"
+                                            : "[[stages.boundaries]]" );
+        BoundaryConfig bc;
+        const auto where = r.choice(
+            "where", { "left", "right", "bottom", "top", "below_polyline" },
+            Need::Required );
+        const auto condition =
+            r.choice( "condition", { "fixed", "fix_x", "fix_y", "none" },
+                      Need::Required );
+        if ( where )
+            bc.where = static_cast<BoundarySelector>( *where );
+        if ( condition == 3 )
+            bc.constrains_solid = false; // condition stays Fixed, unused
+        else if ( condition )
+            bc.condition = static_cast<BoundaryCondition>( *condition );
+        if ( !rejectIfDry( r, "hydraulic", analysis ) )
+            if ( const auto h =
+                     r.choice( "hydraulic", { "impermeable", "drained" },
+                               Need::Optional ) )
+                bc.hydraulic = static_cast<HydraulicCondition>( *h );
+        if ( !bc.constrains_solid && isDry( analysis ) )
+            diag.keyError( *r.find( "condition" ), r.keyPath( "condition" ),
+                           "\"none\" (a purely hydraulic boundary) is " +
+                               twoPhaseOnlyText() );
+        else if ( !bc.constrains_solid && !r.find( "hydraulic" ) )
+            r.missing( "hydraulic",
+                       "one of \"impermeable\", \"drained\" (required for "
+                       "condition = \"none\", a purely hydraulic boundary)" );
+        if ( where && bc.where == BoundarySelector::BelowPolyline )
+        {
+            if ( auto line = r.points( "polyline_m", 2, "m", Need::Required ) )
+            {
+                checkPolyline( *line, *r.find( "polyline_m" ),
+                               path + ".polyline_m", diag );
+                bc.polyline_m = *line;
+            }
+        }
+        else if ( where && r.find( "polyline_m" ) )
+            diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
+                           "only for where = \"below_polyline\"; remove "
+                           "it or change 'where'" );
+        result.push_back( bc );
+    }
+    return result;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
+                                                      const std::string& prefix,
+                                                      Diagnostics& diag )
+{
+    std::vector<PorePressureCondition> result;
+    for ( std::size_t k = 0; k < array.size(); ++k )
+    {
+        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
+                       diag );
+        r.checkKeys( { "where", "box_m", "pressure_pa", "time_function" },
+                     "[[stages.pore_pressures]]" );
+        PorePressureCondition condition;
+        condition.points = readSelection( r );
+        condition.pressure_pa =
+            r.number( "pressure_pa", Range::any(), "Pa", Need::Required )
+                .value_or( 0.0 );
+        condition.time_function = readTimeFunction( r );
+        result.push_back( condition );
+    }
+    return result;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<PointLoad> readLoads( const toml::array& array,
+                                  const std::string& prefix, Diagnostics& diag )
+{
+    std::vector<PointLoad> result;
+    for ( std::size_t k = 0; k < array.size(); ++k )
+    {
+        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
+                       diag );
+        r.checkKeys(
+            { "where", "box_m", "traction_pa", "length_m", "time_function" },
+            "[[stages.loads]]" );
+        PointLoad load;
+        load.points = readSelection( r );
+        load.traction_pa = r.point( "traction_pa", "Pa", Need::Required )
+                               .value_or( load.traction_pa );
+        load.length_m =
+            r.number( "length_m", Range::above( 0.0 ),
+                      "m (the loaded boundary length)", Need::Required )
+                .value_or( load.length_m );
+        load.time_function = readTimeFunction( r );
+        result.push_back( load );
+    }
+    return result;
+}
+
+} // namespace Impl
+} // namespace mpm

@@ -1,0 +1,48 @@
+#ifndef MPM_CASE_CONDITIONS_HPP
+#define MPM_CASE_CONDITIONS_HPP
+
+#include <io/mpm_case_analysis.hpp>
+#include <io/mpm_case_config.hpp>
+#include <io/mpm_case_diagnostics.hpp>
+
+#include <toml++/toml.h>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+//---------------------------------------------------------------------------//
+// Boundary conditions on grid nodes ([[boundaries]], [[stages.boundaries]])
+// and the conditions of a stage on material points ([[stages.pore_pressures]],
+// [[stages.loads]]). Internal to the case reader.
+//---------------------------------------------------------------------------//
+
+/*!
+  \brief Read an array of boundary tables at prefix ("boundaries" or
+  "stages[k].boundaries"), including the hydraulic condition of two-phase
+  analyses and purely hydraulic boundaries (condition = "none").
+*/
+std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
+                                            const std::string& prefix,
+                                            const Analysis& analysis,
+                                            Diagnostics& diag );
+
+//---------------------------------------------------------------------------//
+//! \brief Read [[stages.pore_pressures]] tables at prefix.
+std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
+                                                      const std::string& prefix,
+                                                      Diagnostics& diag );
+
+//---------------------------------------------------------------------------//
+//! \brief Read [[stages.loads]] tables at prefix.
+std::vector<PointLoad> readLoads( const toml::array& array,
+                                  const std::string& prefix,
+                                  Diagnostics& diag );
+
+} // namespace Impl
+} // namespace mpm
+
+#endif // MPM_CASE_CONDITIONS_HPP

@@ -1,0 +1,135 @@
+#include <mpm_test_backends.hpp>
+#include <mpm_test_cases.hpp>
+
+#include <solver/mpm_run_stages.hpp>
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace
+{
+template <class ExecSpace>
+class SaturatedColumn : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( SaturatedColumn, mpm_test::Backends, mpm_test::BackendName );
+
+//! Cell means (by initial height) of a point field.
+std::map<int, std::pair<double, double>>
+cellMeans( const mpm::HostSnapshot& snap, const std::vector<double>& field,
+           const int stride, const int component, const double h )
+{
+    std::map<int, std::array<double, 3>> sums; // value, y0, count
+    for ( int p = 0; p < snap.num_points; ++p )
+    {
+        const double y0 = snap.x[2 * p + 1] - snap.displacement[2 * p + 1];
+        auto& s = sums[static_cast<int>( y0 / h )];
+        s[0] += field[stride * p + component];
+        s[1] += y0;
+        s[2] += 1.0;
+    }
+    std::map<int, std::pair<double, double>> means; // cell -> (y0, value)
+    for ( const auto& [cell, s] : sums )
+        means[cell] = { s[1] / s[2], s[0] / s[2] };
+    return means;
+}
+
+//---------------------------------------------------------------------------//
+// A saturated column under gravity, starting from p_w = 0, drains through
+// its top surface to the hydrostatic state: p_w = rho_w g depth, v_w -> 0,
+// effective stress sigma'_yy = -(rho_sat - rho_w) g depth (Bishop, S = 1).
+TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
+{
+    using exec_space = TypeParam;
+    const double H = 2.0, h = 0.1, g = 9.81, n = 0.3, rho_s = 2650.0;
+    mpm::StageConfig stage;
+    stage.name = "settle";
+    stage.type = mpm::StageType::Dynamic;
+    stage.gravity_m_per_s2 = { 0.0, -g };
+    stage.damping = 0.5;
+    stage.duration_s = 1.5; // about 5 consolidation times H^2 / c_v
+    auto config = mpm_test::columnCase(
+        H, h, mpm_test::saturatedMaterial( 1.0e7, 0.3, rho_s, n, 1.0e-9 ),
+        stage );
+    config.analysis = mpm::AnalysisType::Saturated;
+
+    mpm::Simulation<exec_space> sim( config );
+    mpm::RunObserver observer;
+    mpm::runStages( sim, config, observer );
+    const auto snap = mpm::hostSnapshot( sim );
+
+    const double rho_w = 1000.0;
+    const double rho_sat = ( 1 - n ) * rho_s + n * rho_w;
+    const auto p_w = cellMeans( snap, snap.p_w, 1, 0, h );
+    const auto s_yy = cellMeans( snap, snap.sigma, 4, 1, h );
+    for ( const auto& [cell, mean] : p_w )
+    {
+        const double depth = H - mean.first;
+        if ( cell >= static_cast<int>( H / h ) - 2 )
+            continue; // the two cells below the drained surface
+        const double expected = rho_w * g * depth;
+        EXPECT_NEAR( mean.second, expected, 0.01 * expected )
+            << "cell " << cell;
+        const double expected_s = -( rho_sat - rho_w ) * g * depth;
+        EXPECT_NEAR( s_yy.at( cell ).second, expected_s,
+                     0.01 * std::abs( expected_s ) )
+            << "cell " << cell;
+    }
+    double v_w_max = 0.0;
+    for ( const double v : snap.v_w )
+        v_w_max = std::max( v_w_max, std::abs( v ) );
+    EXPECT_LT( v_w_max, 1.0e-5 ); // m/s, against K = 1e-2 m/s
+}
+
+//---------------------------------------------------------------------------//
+// Undrained oedometric loading (k = 1e-14 m^2: consolidation time ~1e3 s
+// against a 0.5 s run) of a sealed column: the water carries
+// dp = B sigma_c with B = m_v / (m_v + n / K_w) (Skempton's B for 1D).
+TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
+{
+    using exec_space = TypeParam;
+    const double H = 1.0, h = 0.1, n = 0.3, E = 1.0e7, K_w = 2.0e7;
+    mpm::StageConfig stage;
+    stage.name = "load";
+    stage.type = mpm::StageType::Dynamic;
+    stage.gravity_m_per_s2 = { 0.0, 0.0 };
+    stage.damping = 0.3;
+    stage.duration_s = 0.5;
+    auto config = mpm_test::columnCase(
+        H, h, mpm_test::saturatedMaterial( E, 0.0, 2650.0, n, 1.0e-14 ),
+        stage );
+    config.analysis = mpm::AnalysisType::Saturated;
+    config.water.bulk_modulus_pa = K_w;
+    config.grid.cells[1] = static_cast<int>( H / h + 0.5 ); // sealed top edge
+    mpm::PointLoad load;
+    load.points.box_m = { mpm::Point2{ -1.0, H - 0.5 * h },
+                          mpm::Point2{ 1.0, H } };
+    load.traction_pa = { 0.0, -1.0e4 };
+    load.length_m = h;
+    load.time_function = { { 0.0, 0.0 }, { 0.05, 1.0 } };
+    config.stages[0].loads = { load };
+
+    mpm::Simulation<exec_space> sim( config );
+    mpm::RunObserver observer;
+    mpm::runStages( sim, config, observer );
+    const auto snap = mpm::hostSnapshot( sim );
+
+    const double m_v = 1.0 / E, B = m_v / ( m_v + n / K_w );
+    // Below the loaded top cell (whose points carry the load) the total
+    // vertical stress is the full load: water and skeleton share it.
+    const auto p_w = cellMeans( snap, snap.p_w, 1, 0, h );
+    const auto s_yy = cellMeans( snap, snap.sigma, 4, 1, h );
+    for ( const auto& [cell, mean] : p_w )
+    {
+        if ( cell == static_cast<int>( H / h ) - 1 )
+            continue;
+        EXPECT_NEAR( mean.second, B * 1.0e4, 0.01 * B * 1.0e4 )
+            << "cell " << cell;
+        EXPECT_NEAR( s_yy.at( cell ).second, -( 1.0 - B ) * 1.0e4,
+                     0.01 * ( 1.0 - B ) * 1.0e4 )
+            << "cell " << cell;
+    }
+}
+
+} // namespace
