@@ -44,9 +44,10 @@ void findActiveNodes( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
 */
 template <class ExecSpace>
 void gridUpdateDry( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-                    const double dt, const double damping )
+                    const double dt, const double damping,
+                    const double inertia_scaling = 1.0 )
 {
-    const physics::DryNodalUpdate update{ dt, damping };
+    const physics::DryNodalUpdate update{ dt, damping, inertia_scaling };
     const auto m_i = gv.m_i;
     const auto p_i = gv.p_i;
     const auto f_i = gv.f_i;

@@ -19,9 +19,10 @@ namespace mpm
 template <class ExecSpace>
 void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                          WaterGridViews<ExecSpace>& wg, const double dt,
-                         const double damping )
+                         const double damping,
+                         const double inertia_scaling = 1.0 )
 {
-    const physics::TwoPhaseNodalUpdate update{ dt, damping };
+    const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
     const auto m_s_i = gv.m_i;
     const auto mv_s_i = gv.p_i;
     const auto f_m_i = gv.f_i;

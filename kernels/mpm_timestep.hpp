@@ -62,6 +62,11 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
   \brief CFL reduction of a two-phase scene: with the drag implicit the
   limit is the fastest wave, the undrained mixture wave or the pore-water
   wave of each point (physics::twoPhaseWaveSpeed), h / (c_p + |v_s|).
+  The unsaturated storage dS/dp_w is left out (the stiffest fluid state):
+  a point near saturation can re-wet within a step, and its fluid
+  stiffness then jumps by orders of magnitude (Liakopoulos: 100-fold
+  between p_w = -500 Pa and 0), which a step sized on the softer state
+  does not survive.
 */
 template <class ExecSpace>
 WaveSpeedLimit criticalTimeStepTwoPhase(
@@ -78,7 +83,6 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
     const auto status_p = pv.status_p;
     const auto n_p = wv.n_p;
     const auto S_p = wv.S_p;
-    const auto dS_dp_p = wv.dS_dp_p;
     WaveSpeedLimit limit{ 0.0, 0.0 };
     Kokkos::parallel_reduce(
         "mpm::critical_time_step_two_phase",
@@ -91,7 +95,7 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
             const double rho_m = m_p( p ) / vol_p( p ) + n * S * water.density;
             const double c = physics::twoPhaseWaveSpeed(
                 materials[material_p( p )].constrainedModulus(), rho_m,
-                water.density, n, S, dS_dp_p( p ), water.bulk_modulus );
+                water.density, n, S, 0.0, water.bulk_modulus );
             const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
                                            v_p( p, 1 ) * v_p( p, 1 ) );
             const double dt = cell_size / ( c + speed );

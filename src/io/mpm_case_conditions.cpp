@@ -129,6 +129,41 @@ TimeFunction readTimeFunction( TableReader& r )
 } // namespace
 
 //---------------------------------------------------------------------------//
+std::vector<double> readSnapshotTimes( TableReader& r )
+{
+    const toml::node* node = r.find( "snapshot_times_s" );
+    if ( !node )
+        return {};
+    const std::string path = r.keyPath( "snapshot_times_s" );
+    const toml::array* arr = node->as_array();
+    if ( !arr )
+    {
+        r.diag().mismatch( *node, path,
+                           "an array of stage times in s, strictly increasing" );
+        return {};
+    }
+    std::vector<double> times;
+    for ( std::size_t k = 0; k < arr->size(); ++k )
+    {
+        const auto t = readNumber( *arr->get( k ), indexed( path, k ),
+                                   Range::above( 0.0 ), "s", r.diag() );
+        if ( !t )
+            return {};
+        if ( !times.empty() && !( *t > times.back() ) )
+        {
+            r.diag().keyError( *arr->get( k ), indexed( path, k ),
+                               "expected a time > " + formatNumber( times.back() ) +
+                                   " s (snapshot times must increase "
+                                   "strictly), found " +
+                                   formatNumber( *t ) );
+            return {};
+        }
+        times.push_back( *t );
+    }
+    return times;
+}
+
+//---------------------------------------------------------------------------//
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,

@@ -42,6 +42,9 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix,
                                   Diagnostics& diag );
 
+//! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
+std::vector<double> readSnapshotTimes( TableReader& r );
+
 } // namespace Impl
 } // namespace mpm
 

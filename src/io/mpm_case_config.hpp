@@ -186,6 +186,9 @@ struct StageConfig
     double ke_ratio_tolerance = 1.0e-4;
     //! Snapshot every this many seconds of stage time (0: only at stage end).
     double snapshot_interval_s = 0.0;
+    //! Further snapshots at these stage times (s, increasing); steps are
+    //! shortened to land on them.
+    std::vector<double> snapshot_times_s;
     //! At the end of the stage, reset displacements (x0 = x) for later stages.
     bool reset_displacement = false;
     std::vector<MaterialConfig> materials;
@@ -217,6 +220,13 @@ struct SolverConfig
     bool remove_points_leaving_grid = false;
     //! A speed above this factor times the largest wave speed is unstable.
     double instability_speed_factor = 10.0;
+    /*!
+      Inertia (mass) scaling f >= 1 for slow, quasi-static processes: the
+      inertial masses of the momentum balance are multiplied by f (the
+      weights are not), which slows the waves by sqrt(f) and allows a step
+      sqrt(f) times larger. 1 = true dynamics.
+    */
+    double inertia_scaling = 1.0;
 };
 
 struct CaseConfig

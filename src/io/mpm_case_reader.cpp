@@ -292,7 +292,7 @@ class CaseParser
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
                        "remove_points_leaving_grid",
-                       "instability_speed_factor" },
+                       "instability_speed_factor", "inertia_scaling" },
                      "[solver]" );
         SolverConfig& s = _config.solver;
         s.courant_number = r.number( "courant_number",
@@ -314,6 +314,10 @@ class CaseParser
             r.number( "instability_speed_factor", Range::above( 0.0 ), "",
                       Need::Optional )
                 .value_or( s.instability_speed_factor );
+        s.inertia_scaling =
+            r.number( "inertia_scaling", Range::atLeast( 1.0 ),
+                      "(inertial mass factor)", Need::Optional )
+                .value_or( s.inertia_scaling );
     }
 
     void parseStages( TableReader& root )
@@ -331,7 +335,8 @@ class CaseParser
             TableReader r( *arr->get( k )->as_table(), path, _diag );
             r.checkKeys( { "name", "type", "gravity_m_per_s2", "damping",
                            "duration_s", "ke_ratio_tolerance",
-                           "snapshot_interval_s", "reset_displacement",
+                           "snapshot_interval_s", "snapshot_times_s",
+                           "reset_displacement",
                            "materials", "boundaries", "pore_pressures",
                            "loads" },
                          "[[stages]]" );
@@ -376,6 +381,7 @@ class CaseParser
                 r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
                           "s (0 = at the stage end only)", Need::Optional )
                     .value_or( 0.0 );
+            stage.snapshot_times_s = Impl::readSnapshotTimes( r );
             stage.reset_displacement =
                 r.boolean( "reset_displacement", Need::Optional )
                     .value_or( false );

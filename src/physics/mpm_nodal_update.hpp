@@ -19,6 +19,7 @@ struct DryNodalUpdate
 {
     double dt;      //!< time step, s
     double damping; //!< local damping coefficient, 0 <= damping < 1
+    double inertia_scaling = 1.0; //!< factor on the inertial mass
 
     //! One direction of one node; `fixed` zeroes the new velocity.
     KOKKOS_INLINE_FUNCTION void operator()( const double m, const double p,
@@ -29,7 +30,7 @@ struct DryNodalUpdate
         const double sign_v = ( v_old > 0.0 ) - ( v_old < 0.0 );
         const double f_damped =
             f - damping * Kokkos::Experimental::fabs( f ) * sign_v;
-        v_new = fixed ? 0.0 : v_old + dt * f_damped / m;
+        v_new = fixed ? 0.0 : v_old + dt * f_damped / ( inertia_scaling * m );
         dv = v_new - v_old;
     }
 };

@@ -27,6 +27,7 @@ struct TwoPhaseNodalUpdate
 {
     double dt;      //!< time step, s
     double damping; //!< local damping coefficient
+    double inertia_scaling = 1.0; //!< factor on the inertial masses
 
     struct Result
     {
@@ -51,8 +52,8 @@ struct TwoPhaseNodalUpdate
         const double v_w = has_water ? mv_w / m_w : v_s;
         f_m -= damping * KE::fabs( f_m ) * sign( v_s );
 
-        const double a_w = m_w / dt;
-        const double a_s = m_s / dt;
+        const double a_w = inertia_scaling * m_w / dt;
+        const double a_s = inertia_scaling * m_s / dt;
         const double b_w = a_w * v_w + f_w;
         const double b_s = a_s * v_s + f_m - f_w;
         Result r;

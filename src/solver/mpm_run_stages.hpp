@@ -8,6 +8,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -89,6 +90,40 @@ inline double chooseTimeStep( const SolverConfig& solver,
 }
 
 //---------------------------------------------------------------------------//
+//! Stage times at which snapshots are due: multiples of the interval and the
+//! listed times, before the stage end (which always gets one).
+class SnapshotSchedule
+{
+  public:
+    explicit SnapshotSchedule( const StageConfig& stage )
+        : _interval( stage.snapshot_interval_s )
+        , _times( stage.snapshot_times_s )
+        , _end( stage.duration_s * ( 1.0 - 1.0e-12 ) )
+    {
+    }
+
+    //! The next due time after t (infinite if none before the stage end).
+    double next( const double t ) const
+    {
+        double due = 1.0e300;
+        if ( _interval > 0.0 )
+            due = _interval * ( std::floor( t / _interval * ( 1.0 + 1.0e-12 ) ) + 1.0 );
+        for ( const double listed : _times )
+            if ( listed > t * ( 1.0 + 1.0e-12 ) )
+            {
+                due = std::min( due, listed );
+                break;
+            }
+        return due < _end ? due : 1.0e300;
+    }
+
+  private:
+    double _interval;
+    std::vector<double> _times;
+    double _end;
+};
+
+//---------------------------------------------------------------------------//
 /*!
   \brief Runs every stage of `config` on `sim`: quasi-static stages until
   E_kin / max E_kin < tolerance (or their duration), dynamic stages for
@@ -122,7 +157,8 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         progress.stage_index = static_cast<int>( s );
         progress.stage_duration_s = stage.duration_s;
         double ke_max = 0.0;
-        double next_snapshot = stage.snapshot_interval_s;
+        const SnapshotSchedule schedule( stage );
+        double next_snapshot = schedule.next( 0.0 );
         const double end_tolerance = 1.0e-12 * stage.duration_s;
 
         while ( progress.stage_time_s < stage.duration_s - end_tolerance )
@@ -134,7 +170,9 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             }
             const WaveSpeedLimit limit = sim.waveSpeedLimit();
             double dt = chooseTimeStep( sim.solver, limit );
-            dt = std::min( dt, stage.duration_s - progress.stage_time_s );
+            // Land exactly on the stage end and on snapshot times.
+            dt = std::min( dt, std::min( stage.duration_s, next_snapshot ) -
+                                   progress.stage_time_s );
             sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
 
@@ -150,13 +188,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             stage_summary.dt_max_s = std::max( stage_summary.dt_max_s, dt );
             observer.onStep( progress );
 
-            if ( stage.snapshot_interval_s > 0.0 &&
-                 progress.stage_time_s >= next_snapshot - end_tolerance &&
-                 progress.stage_time_s < stage.duration_s - end_tolerance )
+            if ( progress.stage_time_s >= next_snapshot - end_tolerance )
             {
                 observer.onSnapshot( progress, hostSnapshot( sim ) );
-                while ( next_snapshot <= progress.stage_time_s + end_tolerance )
-                    next_snapshot += stage.snapshot_interval_s;
+                next_snapshot = schedule.next( progress.stage_time_s );
             }
 
             if ( quasi_static )

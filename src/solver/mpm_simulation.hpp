@@ -22,6 +22,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -100,15 +101,20 @@ class Simulation
         conditions.apply( stage, particles, water_particles, grid_config );
     }
 
-    //! CFL limit (Courant number 1) and the largest wave speed.
+    //! CFL limit (Courant number 1) and the largest wave speed, both of
+    //! the inertia-scaled system (waves sqrt(f) slower).
     WaveSpeedLimit waveSpeedLimit() const
     {
-        if ( twoPhase() )
-            return criticalTimeStepTwoPhase( ExecSpace(), particles,
-                                             water_particles, materials, water,
-                                             grid.geometry.h );
-        return criticalTimeStep( ExecSpace(), particles, materials,
-                                 grid.geometry.h );
+        WaveSpeedLimit limit =
+            twoPhase() ? criticalTimeStepTwoPhase( ExecSpace(), particles,
+                                                   water_particles, materials,
+                                                   water, grid.geometry.h )
+                       : criticalTimeStep( ExecSpace(), particles, materials,
+                                           grid.geometry.h );
+        const double root_f = std::sqrt( solver.inertia_scaling );
+        limit.dt_limit *= root_f;
+        limit.max_wave_speed /= root_f;
+        return limit;
     }
 
     /*!
@@ -180,7 +186,7 @@ class Simulation
         p2gMassMomentumForce( exec, particles, grid, settings.gravity_x,
                               settings.gravity_y, conditions.load_force );
         findActiveNodes( exec, grid );
-        gridUpdateDry( exec, grid, dt, settings.damping );
+        gridUpdateDry( exec, grid, dt, settings.damping, solver.inertia_scaling );
         g2pVelocity( exec, particles, grid, dt, solver.flip_fraction );
         p2gMomentum( exec, particles, grid );
         remapVelocity( exec, grid );
@@ -198,7 +204,8 @@ class Simulation
                      materials, water, settings.gravity_x, settings.gravity_y,
                      conditions.load_force );
         findActiveNodes( exec, grid );
-        gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping );
+        gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping,
+                            solver.inertia_scaling );
         g2pVelocityTwoPhase( exec, particles, water_particles, grid, water_grid,
                              dt, solver.flip_fraction );
         p2gMomentumTwoPhase( exec, particles, water_particles, grid, water_grid,
