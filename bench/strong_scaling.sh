@@ -8,11 +8,14 @@
 #                       (default: build)
 #     benchmark_filter  Google Benchmark regex, e.g. 'cells_high:65/' or '^p2g/'
 #                       (default: all)
-# Environment: BENCH_REPETITIONS (default 5), BENCH_MIN_TIME in s (default 0.5).
+# Environment: BENCH_REPETITIONS (default 5), BENCH_MIN_TIME in s (default 0.5),
+#   BENCH_RUN_TAG: run in pieces (e.g. one kernel at a time on a shared
+#   machine): each tagged call keeps the raw files of the other tags and the
+#   table covers all of them. Without a tag, old raw files are removed first.
 # Repetitions are randomly interleaved across benchmarks, so a burst of load
 # from other processes spreads over many benchmarks instead of spoiling the
 # medians of one; still, run on an otherwise idle machine.
-# Writes bench/results/raw_nt{1,2}.json (Google Benchmark output) and
+# Writes bench/results/raw_nt{1,2}[_<tag>].json (Google Benchmark output) and
 # bench/results/strong_scaling.json, and prints a Markdown table on stdout
 # (benchmark progress goes to stderr).
 set -euo pipefail
@@ -33,6 +36,9 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 results="$bench_dir/results"
 mkdir -p "$results"
+tag=${BENCH_RUN_TAG:-}
+suffix=${tag:+_$tag}
+[ -n "$tag" ] || rm -f "$results"/raw_nt*.json
 
 # Timing settings: one thread per core, threads spread over the cores.
 export OMP_PROC_BIND=spread OMP_PLACES=threads
@@ -43,7 +49,6 @@ list_benchmarks() {
         --benchmark_filter="$filter" | grep -E '^[a-z0-9_]+/(Serial|OpenMP)/' || true
 }
 
-raw_files=()
 for nt in 1 2; do
     run_filter=$filter
     if [ "$nt" -gt 1 ]; then
@@ -55,7 +60,7 @@ for nt in 1 2; do
         fi
         run_filter="^($names)\$"
     fi
-    out="$results/raw_nt$nt.json"
+    out="$results/raw_nt$nt$suffix.json"
     echo "== $nt thread(s): $binary --kokkos-threads=$nt (filter '$filter')" >&2
     "$binary" --kokkos-threads="$nt" \
         --benchmark_filter="$run_filter" \
@@ -64,9 +69,14 @@ for nt in 1 2; do
         --benchmark_enable_random_interleaving=true \
         --benchmark_min_time="$min_time" \
         --benchmark_out="$out" --benchmark_out_format=json >&2
-    raw_files+=("$out")
 done
 
+shopt -s nullglob
+raw_files=("$results"/raw_nt*.json)
+if [ ${#raw_files[@]} -eq 0 ]; then
+    echo "error: no benchmark matched '$filter'" >&2
+    exit 1
+fi
 "$python" "$bench_dir/strong_scaling_report.py" \
     --output "$results/strong_scaling.json" \
     --repetitions "$repetitions" --min-time "$min_time" --filter "$filter" \

@@ -156,6 +156,7 @@ def main():
             "repetitions": args.repetitions,
             "min_time_s": args.min_time,
             "filter": args.filter,
+            "inputs": [path.rsplit("/", 1)[-1] for path in args.inputs],
             "OMP_PROC_BIND": "spread",
             "OMP_PLACES": "threads",
         },

@@ -17,9 +17,12 @@ namespace mpm
   \brief Two-phase particle-to-grid scatter (formulation.md, step 1):
   solid mass and momentum (gv.m_i, gv.p_i), water mass and momentum,
   mixture force F_m = sum N rho_m V g - sum V sigma . grad N + loads with
-  the total (Bishop) stress sigma = sigma' - S p_w m (Eq. 11),
-  water force F_w = sum N n S rho_w V g + sum n S p_w V grad N,
-  drag coefficient Q = sum N (nS)^2 mu / (k k_rel) V.
+  the total (Bishop) stress sigma = sigma' - S p_w m (Eq. 11), and the
+  water momentum (Eq. 9) integrated per unit water volume:
+  f_w = sum N rho_w V g + sum p_w V grad N (exact integration by parts of
+  -grad p_w, no grad(nS) term lost), q = sum N n S mu / (k k_rel) V,
+  vol = sum N V; the grid update multiplies f_w and q by the nodal
+  n S = m_w / (rho_w vol).
   `load_force` holds the force (N) on a point of each load condition.
 */
 template <class ExecSpace,
@@ -38,6 +41,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
     Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
     Kokkos::deep_copy( exec_space, gv.f_i, 0.0 );
     Kokkos::deep_copy( exec_space, wg.m_w_i, 0.0 );
+    Kokkos::deep_copy( exec_space, wg.vol_i, 0.0 );
     Kokkos::deep_copy( exec_space, wg.mv_w_i, 0.0 );
     Kokkos::deep_copy( exec_space, wg.f_w_i, 0.0 );
     Kokkos::deep_copy( exec_space, wg.q_i, 0.0 );
@@ -46,6 +50,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
     auto mv_s_sv = createScatterSum<ExecSpace, Duplication>( gv.p_i );
     auto f_m_sv = createScatterSum<ExecSpace, Duplication>( gv.f_i );
     auto m_w_sv = createScatterSum<ExecSpace, Duplication>( wg.m_w_i );
+    auto vol_sv = createScatterSum<ExecSpace, Duplication>( wg.vol_i );
     auto mv_w_sv = createScatterSum<ExecSpace, Duplication>( wg.mv_w_i );
     auto f_w_sv = createScatterSum<ExecSpace, Duplication>( wg.f_w_i );
     auto q_sv = createScatterSum<ExecSpace, Duplication>( wg.q_i );
@@ -99,6 +104,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
             auto mv_s_i = mv_s_sv.access();
             auto f_m_i = f_m_sv.access();
             auto m_w_i = m_w_sv.access();
+            auto vol_i = vol_sv.access();
             auto mv_w_i = mv_w_sv.access();
             auto f_w_i = f_w_sv.access();
             auto q_i = q_sv.access();
@@ -108,6 +114,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
                 const int j = cj + ( k >> 1 );
                 m_s_i( i, j ) += w[k] * m_s;
                 m_w_i( i, j ) += w[k] * m_w;
+                vol_i( i, j ) += w[k] * vol;
                 q_i( i, j ) += w[k] * drag;
                 for ( int d = 0; d < 2; ++d )
                 {
@@ -123,8 +130,8 @@ void p2gTwoPhase( const ExecSpace& exec_space,
                     f_m_i( i, j, d ) +=
                         w[k] * ( ( m_s + m_w ) * g[d] + load[d] ) -
                         vol * div_sigma[d];
-                    f_w_i( i, j, d ) +=
-                        w[k] * m_w * g[d] + nS * p_w * vol * grad[d];
+                    f_w_i( i, j, d ) += w[k] * water.density * vol * g[d] +
+                                        p_w * vol * grad[d];
                 }
             }
         } );
@@ -134,6 +141,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
     Kokkos::Experimental::contribute( gv.p_i, mv_s_sv );
     Kokkos::Experimental::contribute( gv.f_i, f_m_sv );
     Kokkos::Experimental::contribute( wg.m_w_i, m_w_sv );
+    Kokkos::Experimental::contribute( wg.vol_i, vol_sv );
     Kokkos::Experimental::contribute( wg.mv_w_i, mv_w_sv );
     Kokkos::Experimental::contribute( wg.f_w_i, f_w_sv );
     Kokkos::Experimental::contribute( wg.q_i, q_sv );

@@ -62,10 +62,14 @@ struct WaterGridViews
     using vector_view = Kokkos::View<double** [2], device_type>;
     using int_view = Kokkos::View<int**, device_type>;
 
-    scalar_view m_w_i;  //!< water mass, kg
+    scalar_view m_w_i;  //!< water mass sum N n S rho_w V, kg
+    scalar_view vol_i;  //!< mixture volume sum N V, m^3
     vector_view mv_w_i; //!< water momentum, kg m/s
-    vector_view f_w_i;  //!< water force (weight + pressure gradient), N
-    scalar_view q_i;   //!< drag coefficient sum N (nS)^2 mu / (k k_rel) V, kg/s
+    //! Water force per unit water volume fraction, sum N rho_w V g +
+    //! sum p_w grad N V (N); times the nodal n S it is the water force.
+    vector_view f_w_i;
+    //! Drag per unit water volume fraction, sum N n S mu / (k k_rel) V (kg/s).
+    scalar_view q_i;
     vector_view v_w_i; //!< water velocity at the end of the step, m/s
     vector_view dv_w_i; //!< water velocity increment of the step, m/s
     //! Bit mask: node_fix_x / node_fix_y tie that water velocity component
@@ -77,6 +81,7 @@ struct WaterGridViews
 
     explicit WaterGridViews( const physics::GridGeometry& grid )
         : m_w_i( "m_w_i", grid.nx + 1, grid.ny + 1 )
+        , vol_i( "vol_i", grid.nx + 1, grid.ny + 1 )
         , mv_w_i( "mv_w_i", grid.nx + 1, grid.ny + 1 )
         , f_w_i( "f_w_i", grid.nx + 1, grid.ny + 1 )
         , q_i( "q_i", grid.nx + 1, grid.ny + 1 )

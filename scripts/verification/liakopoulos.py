@@ -24,7 +24,7 @@ import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_REFERENCE = os.path.normpath(os.path.join(HERE, "..", "..", "..", "shared", "reference", "data"))
+DEFAULT_REFERENCE = os.path.normpath(os.path.join(HERE, "..", "..", "tests", "data", "reference"))
 TIMES_MIN = [5, 10, 20, 40, 80, 120]
 
 

@@ -82,8 +82,9 @@ struct TwoPhaseNodalUpdate
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Drag coefficient of one point, (nS)^2 mu / (k k_rel) V (kg/s),
-  from Eq. 9 times nS per unit mixture volume.
+  \brief Drag of one point per unit water volume fraction,
+  n S mu / (k k_rel) V (kg/s): Eq. 9 is integrated per unit water volume,
+  and the nodal n S multiplies it at the node (see p2gTwoPhase).
 */
 KOKKOS_INLINE_FUNCTION double dragCoefficient( const double n, const double S,
                                                const double viscosity,
@@ -91,8 +92,7 @@ KOKKOS_INLINE_FUNCTION double dragCoefficient( const double n, const double S,
                                                const double k_rel,
                                                const double volume )
 {
-    const double nS = n * S;
-    return nS * nS * viscosity / ( permeability * k_rel ) * volume;
+    return n * S * viscosity / ( permeability * k_rel ) * volume;
 }
 
 //---------------------------------------------------------------------------//

@@ -205,7 +205,7 @@ class Simulation
                      conditions.load_force );
         findActiveNodes( exec, grid );
         gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping,
-                            solver.inertia_scaling );
+                            water.density, solver.inertia_scaling );
         g2pVelocityTwoPhase( exec, particles, water_particles, grid, water_grid,
                              dt, solver.flip_fraction );
         p2gMomentumTwoPhase( exec, particles, water_particles, grid, water_grid,
