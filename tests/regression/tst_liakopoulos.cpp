@@ -18,7 +18,8 @@ class Liakopoulos : public ::testing::Test
 };
 TYPED_TEST_SUITE( Liakopoulos, mpm_test::Backends, mpm_test::BackendName );
 
-//! Reference profile p_w(height) at one time (OpenGeoSys, tests/data/reference).
+//! Reference profile p_w(height) at one time (OpenGeoSys,
+//! tests/data/reference).
 std::map<int, std::vector<std::pair<double, double>>> readProfiles()
 {
     std::ifstream in( RAINSLIDE_TEST_DATA_DIR
@@ -144,7 +145,8 @@ TYPED_TEST( Liakopoulos, low_permeability_is_stable_at_paper_and_cfl_steps )
 {
     for ( const double dt : { 5.0e-6, 0.0 } )
     {
-        auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/liakopoulos.toml" );
+        auto config =
+            mpm::readCaseFile( RAINSLIDE_CASES_DIR "/liakopoulos.toml" );
         config.materials[0].permeability_m2 = 1.0e-13;
         for ( auto& stage : config.stages )
             stage.materials[0].permeability_m2 = 1.0e-13;
@@ -164,7 +166,8 @@ TYPED_TEST( Liakopoulos, low_permeability_is_stable_at_paper_and_cfl_steps )
         const auto snap = mpm::hostSnapshot( sim );
         double v_max = 0.0;
         for ( std::size_t k = 0; k < snap.v.size(); ++k )
-            v_max = std::max( { v_max, std::abs( snap.v[k] ), std::abs( snap.v_w[k] ) } );
+            v_max = std::max(
+                { v_max, std::abs( snap.v[k] ), std::abs( snap.v_w[k] ) } );
         // The gravity load leaves elastic oscillations (static settlement
         // ~3 mm, drained period ~0.1 s: ~0.2 m/s); an instability grows
         // without bound.
