@@ -108,7 +108,8 @@ struct PorePressureCondition
 };
 
 //! External force on selected points: traction_pa * length_m shared
-//! equally by the selected points, times f(t).
+//! equally by the selected points, times f(t). A point selected by several
+//! loads carries their sum.
 struct PointLoad
 {
     PointSelection points;

@@ -107,7 +107,8 @@ class SnapshotSchedule
     {
         double due = 1.0e300;
         if ( _interval > 0.0 )
-            due = _interval * ( std::floor( t / _interval * ( 1.0 + 1.0e-12 ) ) + 1.0 );
+            due = _interval *
+                  ( std::floor( t / _interval * ( 1.0 + 1.0e-12 ) ) + 1.0 );
         for ( const double listed : _times )
             if ( listed > t * ( 1.0 + 1.0e-12 ) )
             {

@@ -186,7 +186,8 @@ class Simulation
         p2gMassMomentumForce( exec, particles, grid, settings.gravity_x,
                               settings.gravity_y, conditions.load_force );
         findActiveNodes( exec, grid );
-        gridUpdateDry( exec, grid, dt, settings.damping, solver.inertia_scaling );
+        gridUpdateDry( exec, grid, dt, settings.damping,
+                       solver.inertia_scaling );
         g2pVelocity( exec, particles, grid, dt, solver.flip_fraction );
         p2gMomentum( exec, particles, grid );
         remapVelocity( exec, grid );

@@ -13,6 +13,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <algorithm>
 #include <vector>
 
 namespace mpm
@@ -124,11 +125,12 @@ struct StageConditions
     using device_type = DeviceType<ExecSpace>;
     //! Current pressure of each pore-pressure condition, Pa.
     Kokkos::View<double*, device_type> prescribed_p_w{ "prescribed_p_w", 0 };
-    //! Current force on one point of each load, N.
+    //! Current force on one point of each load group, N.
     LoadForceView<ExecSpace> load_force{ "load_force", 0 };
     std::vector<PorePressureCondition> pore_pressures;
     std::vector<PointLoad> loads;
-    std::vector<int> load_counts; //!< points per load
+    std::vector<int> load_counts;              //!< points per load
+    std::vector<std::vector<int>> load_groups; //!< loads of each group
 
     //! Assigns the stage's conditions to the points.
     void apply( const StageConfig& stage, const ParticleViews<ExecSpace>& pv,
@@ -145,23 +147,38 @@ struct StageConditions
         const std::vector<int> status( status_h.data(),
                                        status_h.data() + status_h.span() );
 
-        // Loads: the last load selecting a point wins.
+        // Loads: a point selected by several loads carries their sum; each
+        // distinct set of loads is one group with its own force.
         auto load_h = Kokkos::create_mirror( pv.load_p );
         Kokkos::deep_copy( load_h, -1 );
+        const std::size_t num_points = x.size() / 2;
+        std::vector<std::vector<int>> sets( num_points );
         load_counts.assign( loads.size(), 0 );
         for ( std::size_t l = 0; l < loads.size(); ++l )
         {
             const auto picked =
                 selectPoints( loads[l].points, x, status, grid );
-            for ( std::size_t p = 0; p < picked.size(); ++p )
+            for ( std::size_t p = 0; p < num_points; ++p )
                 if ( picked[p] )
-                    load_h( p ) = static_cast<int>( l );
+                {
+                    sets[p].push_back( static_cast<int>( l ) );
+                    ++load_counts[l];
+                }
         }
-        for ( std::size_t p = 0; p < x.size() / 2; ++p )
-            if ( load_h( p ) >= 0 )
-                ++load_counts[load_h( p )];
+        load_groups.clear();
+        for ( std::size_t p = 0; p < num_points; ++p )
+        {
+            if ( sets[p].empty() )
+                continue;
+            auto it =
+                std::find( load_groups.begin(), load_groups.end(), sets[p] );
+            load_h( p ) = static_cast<int>( it - load_groups.begin() );
+            if ( it == load_groups.end() )
+                load_groups.push_back( sets[p] );
+        }
         Kokkos::deep_copy( pv.load_p, load_h );
-        load_force = LoadForceView<ExecSpace>( "load_force", loads.size() );
+        load_force =
+            LoadForceView<ExecSpace>( "load_force", load_groups.size() );
 
         prescribed_p_w = Kokkos::View<double*, device_type>(
             "prescribed_p_w", pore_pressures.size() );
@@ -192,16 +209,19 @@ struct StageConditions
                 evaluateTimeFunction( pore_pressures[c].time_function, t );
         Kokkos::deep_copy( prescribed_p_w, p_h );
         auto f_h = Kokkos::create_mirror_view( load_force );
-        for ( std::size_t l = 0; l < loads.size(); ++l )
+        for ( std::size_t g = 0; g < load_groups.size(); ++g )
         {
-            const double scale =
-                load_counts[l] > 0
-                    ? loads[l].length_m *
-                          evaluateTimeFunction( loads[l].time_function, t ) /
-                          load_counts[l]
-                    : 0.0;
-            f_h( l, 0 ) = loads[l].traction_pa[0] * scale;
-            f_h( l, 1 ) = loads[l].traction_pa[1] * scale;
+            f_h( g, 0 ) = f_h( g, 1 ) = 0.0;
+            for ( const int l : load_groups[g] )
+            {
+                // traction x length shared equally by the load's points.
+                const double scale =
+                    loads[l].length_m *
+                    evaluateTimeFunction( loads[l].time_function, t ) /
+                    load_counts[l];
+                f_h( g, 0 ) += loads[l].traction_pa[0] * scale;
+                f_h( g, 1 ) += loads[l].traction_pa[1] * scale;
+            }
         }
         Kokkos::deep_copy( load_force, f_h );
     }
