@@ -130,8 +130,8 @@ void p2gTwoPhase( const ExecSpace& exec_space,
                     f_m_i( i, j, d ) +=
                         w[k] * ( ( m_s + m_w ) * g[d] + load[d] ) -
                         vol * div_sigma[d];
-                    f_w_i( i, j, d ) += w[k] * water.density * vol * g[d] +
-                                        p_w * vol * grad[d];
+                    f_w_i( i, j, d ) +=
+                        w[k] * water.density * vol * g[d] + p_w * vol * grad[d];
                 }
             }
         } );

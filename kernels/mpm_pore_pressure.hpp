@@ -29,16 +29,18 @@ struct RetentionAt
   (formulation.md steps 6, 7, 9): p_w from the mass-conservative Eq. 8
   (explicit when saturated), prescribed point pressures, porosity from
   Eq. 2 as n' = 1 - (1 - n) / det(I + L dt), then S, dS/dp_w, k_rel.
-  `prescribed_p_w(c)` is the current pressure of condition c, Pa.
+  `prescribed_p_w(c)` is the current pressure of condition c, Pa;
+  `inflow_rate(f)` the water volume inflow f adds per unit point volume
+  and time (1/s), a source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on
+  its points (the excess runs off).
 */
-template <class ExecSpace, class PressureView>
-void porePressureUpdate( const ExecSpace& exec_space,
-                         const ParticleViews<ExecSpace>& pv,
-                         const WaterParticleViews<ExecSpace>& wv,
-                         const physics::MaterialTable& materials,
-                         const physics::WaterParams& water, const double dt,
-                         const bool saturated,
-                         const PressureView& prescribed_p_w )
+template <class ExecSpace, class PressureView, class RateView, class FlagView>
+void porePressureUpdate(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const WaterParticleViews<ExecSpace>& wv,
+    const physics::MaterialTable& materials, const physics::WaterParams& water,
+    const double dt, const bool saturated, const PressureView& prescribed_p_w,
+    const RateView& inflow_rate, const FlagView& inflow_ponding )
 {
     const physics::Kinematics kinematics{ dt };
     const auto grad_v_p = pv.grad_v_p;
@@ -51,6 +53,7 @@ void porePressureUpdate( const ExecSpace& exec_space,
     const auto n_p = wv.n_p;
     const auto div_v_w_p = wv.div_v_w_p;
     const auto condition_p = wv.p_w_condition_p;
+    const auto inflow_p = wv.inflow_p;
 
     Kokkos::parallel_for(
         "mpm::pore_pressure_update",
@@ -65,8 +68,11 @@ void porePressureUpdate( const ExecSpace& exec_space,
             const double S = S_p( p );
             const double div_s = L[0][0] + L[1][1];
             // Water volume change per unit volume over the step (Eq. 8).
+            const int inflow = inflow_p( p );
+            const double source = inflow >= 0 ? inflow_rate( inflow ) : 0.0;
             const double volume_change =
-                -dt * ( n * S * div_v_w_p( p ) + ( 1.0 - n ) * S * div_s );
+                dt *
+                ( source - n * S * div_v_w_p( p ) - ( 1.0 - n ) * S * div_s );
             const RetentionAt retention{ materials[material_p( p )].retention };
             double p_w = p_w_p( p );
             if ( saturated )
@@ -74,6 +80,8 @@ void porePressureUpdate( const ExecSpace& exec_space,
             else
                 p_w += physics::porePressureIncrement(
                     retention, p_w, S, n, water.bulk_modulus, volume_change );
+            if ( inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0 )
+                p_w = 0.0;
             if ( condition_p( p ) >= 0 )
                 p_w = prescribed_p_w( condition_p( p ) );
             p_w_p( p ) = p_w;

@@ -69,7 +69,7 @@ def terzaghi_plan():
                     r["groups"].append(group)
             return
         seen.add(key)
-        runs.append({"problem": "terzaghi", "key": key, "groups": [group],
+        runs.append({"problem": "terzaghi", "study": "terzaghi", "key": key, "groups": [group],
                      "params": {"cells": cells, "points_per_cell": ppc, "bulk_modulus_pa": kw,
                                 "courant_number": courant},
                      "id": f"terzaghi_c{cells}_p{ppc}_kw{kw:.0e}_cfl{courant}"})
@@ -85,27 +85,36 @@ def terzaghi_plan():
 
 
 def liakopoulos_plan():
+    """Two sets of the same parameter grid: the geostatic stage as in
+    cases/liakopoulos.toml (it stops when E_kin / max E_kin < 1e-6, which can
+    happen at a turning point of the decaying skeleton oscillation, i.e. away
+    from equilibrium), and an "equilibrated" geostatic stage that runs for a
+    fixed time of about five skeleton periods (see liakopoulos_case)."""
     runs = []
 
-    def add(cells, kw, f, courant):
-        runs.append({"problem": "liakopoulos", "key": (cells, kw, f, courant), "groups": ["sweep"],
+    def add(cells, kw, f, courant, geostatic):
+        study = "liakopoulos" if geostatic == "case" else "liakopoulos_geq"
+        runs.append({"problem": "liakopoulos", "study": study, "key": (cells, kw, f, courant, geostatic),
+                     "groups": ["sweep"],
                      "params": {"cells": cells, "bulk_modulus_pa": kw, "inertia_scaling": f,
-                                "courant_number": courant},
-                     "id": f"liakopoulos_c{cells}_kw{kw:.0e}_f{f:.0e}_cfl{courant}"})
+                                "courant_number": courant, "geostatic": geostatic},
+                     "id": f"liakopoulos_c{cells}_kw{kw:.0e}_f{f:.0e}_cfl{courant}"
+                           + ("" if geostatic == "case" else "_geq")})
 
-    for kw in (2.0e9, 2.0e8, 2.0e7):
-        for f in (1.0e4, 1.0e5, 1.0e6):
-            for courant in (0.5, 0.9):
-                add(10, kw, f, courant)                  # 10 cells: full factorial
-    for kw in (2.0e9, 2.0e8, 2.0e7):
-        for f in (1.0e4, 1.0e5, 1.0e6):
-            for courant in (0.5, 0.9):
-                # 20 cells: pruned. The Courant number's effect is measured at
-                # 10 cells; at 20 cells courant 0.5 is run only where it is
-                # cheap (f >= 1e5), courant 0.9 everywhere.
-                if courant == 0.5 and f < 1.0e5:
-                    continue
-                add(20, kw, f, courant)
+    for geostatic in ("case", "equilibrated"):
+        for kw in (2.0e9, 2.0e8, 2.0e7):
+            for f in (1.0e4, 1.0e5, 1.0e6):
+                for courant in (0.5, 0.9):
+                    add(10, kw, f, courant, geostatic)   # 10 cells: full factorial
+        for kw in (2.0e9, 2.0e8, 2.0e7):
+            for f in (1.0e4, 1.0e5, 1.0e6):
+                for courant in (0.5, 0.9):
+                    # 20 cells: pruned. The Courant number's effect is measured at
+                    # 10 cells; at 20 cells courant 0.5 is run only where it is
+                    # cheap (f >= 1e5), courant 0.9 everywhere.
+                    if courant == 0.5 and f < 1.0e5:
+                        continue
+                    add(20, kw, f, courant, geostatic)
     return runs
 
 
@@ -146,6 +155,20 @@ def set_key(text, key, value, table=None):
         return text[:m.end()] + f"\n{key} = {toml_value(value)}" + text[m.end():]
     m = re.search(r"^\[\[materials\]\]", text, re.M)
     return text[:m.start()] + f"[{table}]\n{key} = {toml_value(value)}\n\n" + text[m.start():]
+
+
+def set_stage_key(text, stage, key, value):
+    """Sets `key = value` in the [[stages]] table named `stage` (the lines
+    between its `name = "stage"` and the next table header)."""
+    lines = text.split("\n")
+    start = next(i for i, l in enumerate(lines) if re.match(r'^\s*name\s*=\s*"' + re.escape(stage) + '"', l))
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].lstrip().startswith("[")), len(lines))
+    for i in range(start, end):
+        if re.match(r"^\s*" + re.escape(key) + r"\s*=", lines[i]):
+            lines[i] = f"{key} = {toml_value(value)}"
+            return "\n".join(lines)
+    lines.insert(start + 1, f"{key} = {toml_value(value)}")
+    return "\n".join(lines)
 
 
 def terzaghi_physics(case):
@@ -215,10 +238,24 @@ def liakopoulos_case(base_text, p):
     text = set_key(text, "polygon_m", [[0.0, 0.0], [h, 0.0], [h, H], [0.0, H]])
     text = set_key(text, "courant_number", p["courant_number"], "solver")
     text = set_key(text, "inertia_scaling", p["inertia_scaling"], "solver")
+    geo_duration = None
+    if p.get("geostatic", "case") == "equilibrated":
+        # The geostatic stage runs for a fixed time instead of stopping at the
+        # first step with E_kin / max E_kin < 1e-6: 200 s x max(1, sqrt(f / 1e5))
+        # (the damped skeleton oscillation has a ~40 s period at f = 1e5 and
+        # ~100 s at f = 1e6 and is below 1e-3 mm after ~3 periods).
+        geo_duration = round(200.0 * max(1.0, math.sqrt(p["inertia_scaling"] / 1.0e5)), 1)
+        text = set_stage_key(text, "geostatic", "ke_ratio_tolerance", 1.0e-12)
+        text = set_stage_key(text, "geostatic", "duration_s", geo_duration)
     text = set_key(text, "description", f"Liakopoulos variant: {p['cells']} cells, "
                    f"K_w = {p['bulk_modulus_pa']:.0e} Pa, inertia scaling {p['inertia_scaling']:.0e}, "
-                   f"courant {p['courant_number']} (speed_vs_error.py)")
+                   f"courant {p['courant_number']}"
+                   + (", equilibrated geostatic stage" if geo_duration is not None else "")
+                   + " (speed_vs_error.py)")
     c = tomllib.loads(text)
+    if geo_duration is not None:
+        geo = [s for s in c["stages"] if s["name"] == "geostatic"][0]
+        assert geo["duration_s"] == geo_duration and geo["ke_ratio_tolerance"] == 1.0e-12
     assert c["grid"]["cell_size_m"] == h and c["grid"]["cells"] == [1, p["cells"]]
     assert c["solver"]["courant_number"] == p["courant_number"]
     assert c["solver"]["inertia_scaling"] == p["inertia_scaling"]
@@ -270,11 +307,19 @@ def terzaghi_physical_error(run_dir, case_text, reference_case):
     return max(cell_errs), max(point_errs)
 
 
+def geostatic_info(metrics):
+    geo = [st for st in metrics.get("stages", []) if st["name"] == "geostatic"]
+    if not geo:
+        return {}
+    return {"geostatic_end_s": geo[0].get("duration_s"), "geostatic_converged": geo[0].get("converged"),
+            "geostatic_ke_ratio": geo[0].get("ke_ratio")}
+
+
 def run_one(binary, out_root, spec, case_text, reference_case, reuse):
     run_dir = os.path.join(out_root, "runs", spec["id"])
     case_path = os.path.join(run_dir, "case.toml")
     metrics_path = os.path.join(run_dir, "metrics.json")
-    record = {"id": spec["id"], "problem": spec["problem"], "groups": spec["groups"],
+    record = {"id": spec["id"], "problem": spec["problem"], "study": spec["study"], "groups": spec["groups"],
               **spec["params"], "case_file": os.path.relpath(case_path, ROOT)}
     previous = reuse.get(spec["id"]) if reuse else None
     if previous and previous.get("status") == "completed" and os.path.exists(metrics_path) \
@@ -282,9 +327,13 @@ def run_one(binary, out_root, spec, case_text, reference_case, reuse):
         with open(case_path) as f:
             same = f.read() == case_text
         with open(metrics_path) as f:
-            scored = "verification" in json.load(f)
+            m = json.load(f)
+        scored = "verification" in m
         if same and scored:
+            previous.update(geostatic_info(m))
             previous["groups"] = spec["groups"]
+            previous["study"] = spec["study"]
+            previous.update(spec["params"])
             previous["reused"] = True
             return previous
     os.makedirs(run_dir, exist_ok=True)
@@ -362,6 +411,7 @@ def run_one(binary, out_root, spec, case_text, reference_case, reuse):
                        "settlement_120min_relative_error": abs(v["per_time"]["120"]["settlement_m"]
                                                                / v["per_time"]["120"]["settlement_ref_m"] - 1.0),
                        "error": max(v["cell_relative_error_max"], v["outflow_relative_error_max"])})
+        record.update(geostatic_info(m))
     if record["status"] != "completed":
         record["output"] = (proc.stdout + proc.stderr)[-3000:]
     return record
@@ -402,15 +452,24 @@ def fmt(x, spec):
     return "–" if x is None else format(x, spec)
 
 
+STUDIES = ("terzaghi", "liakopoulos", "liakopoulos_geq")
+TITLES = {"terzaghi": "Terzaghi",
+          "liakopoulos": "Liakopoulos (geostatic stage as in the case)",
+          "liakopoulos_geq": "Liakopoulos (equilibrated geostatic stage)"}
+
+
+def study_of(r):
+    return r.get("study", r["problem"])
+
+
 def tables(records, total_s):
     out = []
-    tz = [r for r in records if r["problem"] == "terzaghi"]
-    lk = [r for r in records if r["problem"] == "liakopoulos"]
     bad = [r for r in records if r.get("status") != "completed"]
-    out.append(f"Runs: {len(records)} ({len(tz)} Terzaghi, {len(lk)} Liakopoulos), "
-               f"{len(bad)} not completed; sum of run wall times {sum(r.get('wall_s', 0) for r in records):.0f} s, "
-               f"sweep wall time {total_s:.0f} s.\n")
+    counts = ", ".join(f"{sum(study_of(r) == s for r in records)} {TITLES[s]}" for s in STUDIES)
+    out.append(f"Runs: {len(records)} ({counts}), {len(bad)} not completed; sum of the runs' wall_s "
+               f"{sum(r.get('wall_s') or 0 for r in records):.0f} s, sweep wall time {total_s:.0f} s.\n")
 
+    tz = [r for r in records if study_of(r) == "terzaghi"]
     conv = sorted([r for r in tz if "convergence" in r["groups"]], key=lambda r: r["cells"])
     if conv:
         out.append("### Terzaghi convergence (2x2 points, K_w = 2e9 Pa, Courant 0.5)\n")
@@ -433,56 +492,60 @@ def tables(records, total_s):
             prev = r
         out.append("")
 
-    for problem, rows in (("terzaghi", tz), ("liakopoulos", lk)):
+    for study in STUDIES:
+        rows = [r for r in records if study_of(r) == study]
         if not rows:
             continue
         front = pareto(rows)
         ids = {r["id"] for r in front}
-        title = "Terzaghi" if problem == "terzaghi" else "Liakopoulos"
+        title = TITLES[study]
+        terz = study == "terzaghi"
         out.append(f"### {title}: Pareto front (error vs wall time)\n")
-        if problem == "terzaghi":
-            out.append("| cells | points | K_w (Pa) | Courant | error (cell means vs K_w = 2e9) | L2 points vs K_w = 2e9 | wall (s) |")
+        if terz:
+            out.append("| cells | points | K_w (Pa) | Courant | error (L2 cell means vs K_w = 2e9) | L2 points vs K_w = 2e9 | wall (s) |")
             out.append("|---:|---:|---:|---:|---:|---:|---:|")
             for r in front:
                 out.append(f"| {r['cells']} | {r['points_per_cell']}x{r['points_per_cell']} | {r['bulk_modulus_pa']:.0e} | "
                            f"{r['courant_number']} | {r['error']:.5f} | {r['l2_error_max_vs_ref_kw']:.4f} | {r['wall_s']:.2f} |")
         else:
-            out.append("| cells | K_w (Pa) | f | Courant | error | cell rel. | outflow rel. | point rel. | wall (s) |")
-            out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+            out.append("| cells | K_w (Pa) | f | Courant | error | cell rel. | outflow rel. | point rel. | settlement rel. | wall (s) |")
+            out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
             for r in front:
                 out.append(f"| {r['cells']} | {r['bulk_modulus_pa']:.0e} | {r['inertia_scaling']:.0e} | {r['courant_number']} | "
                            f"{r['error']:.4f} | {r['cell_relative_error_max']:.4f} | {r['outflow_relative_error_max']:.4f} | "
-                           f"{r['relative_error_max']:.4f} | {r['wall_s']:.2f} |")
+                           f"{r['relative_error_max']:.4f} | {r['settlement_120min_relative_error']:.3f} | {r['wall_s']:.2f} |")
         out.append("")
         out.append(f"### {title}: all runs (P = on the Pareto front)\n")
-        if problem == "terzaghi":
+        if terz:
             out.append("| cells | points | K_w (Pa) | Courant | L2 points | L2 cells | L2 cells vs K_w = 2e9 | L2 points vs K_w = 2e9 | wall (s) | steps | MP-updates/s | P |")
             out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|")
             key = lambda r: (r["cells"], r["points_per_cell"], -r["bulk_modulus_pa"], r["courant_number"])
         else:
-            out.append("| cells | K_w (Pa) | f | Courant | point rel. | cell rel. | outflow rel. | error | settl. 120 min (mm) | wall (s) | steps | MP-updates/s | P |")
-            out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|")
+            out.append("| cells | K_w (Pa) | f | Courant | point rel. | cell rel. | outflow rel. | error | settl. 120 min (mm) | settl. rel. | geostatic end (s) | wall (s) | steps | MP-updates/s | P |")
+            out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|")
             key = lambda r: (r["cells"], -r["bulk_modulus_pa"], r["inertia_scaling"], r["courant_number"])
         for r in sorted(rows, key=key):
             mark = "P" if r["id"] in ids else ""
             if r.get("status") != "completed":
-                if problem == "terzaghi":
+                if terz:
                     out.append(f"| {r['cells']} | {r['points_per_cell']}x{r['points_per_cell']} | {r['bulk_modulus_pa']:.0e} | "
                                f"{r['courant_number']} | {r.get('status')} | | | | | | | |")
                 else:
                     out.append(f"| {r['cells']} | {r['bulk_modulus_pa']:.0e} | {r['inertia_scaling']:.0e} | {r['courant_number']} | "
-                               f"{r.get('status')} | | | | | | | | |")
+                               f"{r.get('status')} | | | | | | | | | | |")
                 continue
-            if problem == "terzaghi":
+            if terz:
                 out.append(f"| {r['cells']} | {r['points_per_cell']}x{r['points_per_cell']} | {r['bulk_modulus_pa']:.0e} | "
                            f"{r['courant_number']} | {r['l2_error_max']:.4f} | {r['l2_error_cell_max']:.5f} | "
                            f"{r['l2_error_cell_max_vs_ref_kw']:.5f} | {r['l2_error_max_vs_ref_kw']:.4f} | {r['wall_s']:.2f} | "
                            f"{r['steps']} | {r['mp_updates_per_s']:.3g} | {mark} |")
             else:
-                s = r.get("settlement_120min_m")
+                geo = r.get("geostatic_end_s")
+                conv_mark = "" if r.get("geostatic_converged", True) else " (max)"
                 out.append(f"| {r['cells']} | {r['bulk_modulus_pa']:.0e} | {r['inertia_scaling']:.0e} | {r['courant_number']} | "
                            f"{r['relative_error_max']:.4f} | {r['cell_relative_error_max']:.4f} | "
-                           f"{r['outflow_relative_error_max']:.4f} | {r['error']:.4f} | {fmt(None if s is None else 1e3 * s, '.3f')} | "
+                           f"{r['outflow_relative_error_max']:.4f} | {r['error']:.4f} | {1e3 * r['settlement_120min_m']:.3f} | "
+                           f"{r['settlement_120min_relative_error']:.3f} | {fmt(geo, '.1f')}{conv_mark} | "
                            f"{r['wall_s']:.2f} | {r['steps']} | {r['mp_updates_per_s']:.3g} | {mark} |")
         out.append("")
     if bad:
@@ -496,18 +559,20 @@ def figures(records, png, conv_png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
 
-    problems = [p for p in ("terzaghi", "liakopoulos") if any(r["problem"] == p for r in records)]
-    fig, axes = plt.subplots(1, len(problems), figsize=(7.5 * len(problems), 6.2), squeeze=False)
-    for ax, problem in zip(axes[0], problems):
-        rows = [r for r in records if r["problem"] == problem and r.get("status") == "completed"]
+    studies = [s for s in STUDIES if any(study_of(r) == s for r in records)]
+    fig, axes = plt.subplots(1, len(studies), figsize=(6.6 * len(studies), 6.4), squeeze=False)
+    for ax, study in zip(axes[0], studies):
+        rows = [r for r in records if study_of(r) == study and r.get("status") == "completed"]
         front = pareto(rows)
         ids = {r["id"] for r in front}
-        if problem == "terzaghi":
+        terz = study == "terzaghi"
+        if terz:
             colour_key, ckey_name = "bulk_modulus_pa", "K_w (Pa)"
         else:
             colour_key, ckey_name = "inertia_scaling", "inertia scaling f"
-        values = sorted({r[colour_key] for r in rows}, reverse=problem == "terzaghi")
+        values = sorted({r[colour_key] for r in rows}, reverse=terz)
         cmap = plt.get_cmap("viridis")
         colours = {v: cmap(i / max(1, len(values) - 1) * 0.85) for i, v in enumerate(values)}
         markers = {10: "o", 20: "s", 40: "^", 80: "D"}
@@ -522,34 +587,31 @@ def figures(records, png, conv_png):
         for r in front:
             ax.scatter(r["wall_s"], r["error"], s=70, marker=markers.get(r["cells"], "x"),
                        color=colours[r[colour_key]], edgecolors="crimson", linewidths=1.6, zorder=4)
-        # Labels: alternate sides to limit overlaps.
         for i, r in enumerate(front):
-            dy = 10 if i % 2 == 0 else -14
+            dy = 8 if i % 2 == 0 else -13
             ax.annotate(short_label(r), (r["wall_s"], r["error"]), textcoords="offset points",
                         xytext=(6, dy), fontsize=7, color="crimson", zorder=5)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.grid(True, which="both", alpha=0.25)
         ax.set_xlabel("wall time (s), serial backend, 1 thread")
-        if problem == "terzaghi":
-            ax.set_title("Terzaghi consolidation")
+        ax.set_title(TITLES[study], fontsize=10)
+        if terz:
             ax.set_ylabel("max relative L2 error of cell-mean p_w\n(vs series solution with K_w = 2e9 Pa)")
         else:
-            ax.set_title("Liakopoulos drainage column (2 h)")
             ax.set_ylabel("max(cell-mean p_w error / top suction,\noutflow relative error) vs OpenGeoSys")
-        from matplotlib.lines import Line2D
         handles = [Line2D([], [], ls="", marker="o", color=colours[v], label=f"{ckey_name} = {v:.0e}") for v in values]
         handles += [Line2D([], [], ls="", marker=markers[c], color="grey", label=f"{c} cells")
                     for c in sorted({r["cells"] for r in rows}) if c in markers]
         handles.append(Line2D([], [], ls="-", marker="o", color="crimson", mfc="none", label="Pareto front"))
         ax.legend(handles=handles, fontsize=7.5, loc="upper right", framealpha=0.85)
-    fig.suptitle("rainslide speed vs error (labels: cells, points/dir (p), K_w, inertia scaling f, Courant C)",
-                 fontsize=10)
+    fig.suptitle("rainslide speed vs error; Pareto labels: cells (c), points per direction (p), "
+                 "water bulk modulus (K), inertia scaling (f), Courant number (C)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(png, dpi=130)
+    fig.savefig(png, dpi=120)
     plt.close(fig)
 
-    conv = sorted([r for r in records if r["problem"] == "terzaghi" and "convergence" in r["groups"]
+    conv = sorted([r for r in records if study_of(r) == "terzaghi" and "convergence" in r["groups"]
                    and r.get("status") == "completed"], key=lambda r: r["cells"])
     if conv_png and len(conv) >= 2:
         fig, ax = plt.subplots(figsize=(6.0, 4.6))
@@ -569,20 +631,20 @@ def figures(records, png, conv_png):
         ax.grid(True, which="both", alpha=0.25)
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(conv_png, dpi=130)
+        fig.savefig(conv_png, dpi=120)
         plt.close(fig)
 
 
 def write_outputs(out_root, records, meta, png, conv_png):
     with open(os.path.join(out_root, "runs.json"), "w") as f:
         json.dump({"meta": meta, "runs": records}, f, indent=2)
-    cols = ["id", "problem", "groups", "status", "cells", "points_per_cell", "bulk_modulus_pa",
+    cols = ["id", "problem", "study", "groups", "status", "geostatic", "cells", "points_per_cell", "bulk_modulus_pa",
             "courant_number", "inertia_scaling", "error", "l2_error_max", "l2_error_cell_max",
             "l2_error_cell_max_vs_ref_kw", "l2_error_max_vs_ref_kw", "relative_error_max",
-            "cell_relative_error_max", "outflow_relative_error_max", "settlement_120min_m", "settlement_120min_relative_error", "wall_s",
+            "cell_relative_error_max", "outflow_relative_error_max", "settlement_120min_m", "settlement_120min_relative_error", "geostatic_end_s", "wall_s",
             "cpu_s", "process_wall_s", "steps", "dt_s", "mp_updates_per_s", "n_particles", "backend",
             "threads", "load_average_1min_before", "pareto"]
-    fronts = {r["id"] for p in ("terzaghi", "liakopoulos") for r in pareto([x for x in records if x["problem"] == p])}
+    fronts = {r["id"] for st in STUDIES for r in pareto([x for x in records if study_of(x) == st])}
     with open(os.path.join(out_root, "runs.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(cols)
@@ -597,7 +659,7 @@ def write_outputs(out_root, records, meta, png, conv_png):
                 row.append("" if v is None else v)
             w.writerow(row)
     with open(os.path.join(out_root, "tables.md"), "w") as f:
-        f.write(tables(records, meta.get("sweep_wall_s", 0.0)))
+        f.write(tables(records, meta.get("sweep_wall_s_total", meta.get("sweep_wall_s", 0.0))))
     figures(records, png, conv_png)
 
 
@@ -654,9 +716,12 @@ def main():
     meta = {"binary": binary, "git_head": git, "machine_cores": os.cpu_count(), "backend": "serial",
             "threads": 1, "started": time.strftime("%Y-%m-%d %H:%M:%S %Z")}
     previous = {}
+    earlier = []
     if args.reuse and os.path.exists(os.path.join(out_root, "runs.json")):
         with open(os.path.join(out_root, "runs.json")) as f:
-            previous = {r["id"]: r for r in json.load(f)["runs"]}
+            old = json.load(f)
+        previous = {r["id"]: r for r in old["runs"]}
+        earlier = old["meta"].get("invocations", [])
     records = []
     t_start = time.perf_counter()
     for i, (spec, text) in enumerate(plan):
@@ -674,6 +739,10 @@ def main():
             json.dump({"meta": meta, "runs": records}, f, indent=2)
     meta["sweep_wall_s"] = time.perf_counter() - t_start
     meta["finished"] = time.strftime("%Y-%m-%d %H:%M:%S %Z")
+    executed = sum(1 for r in records if not r.get("reused"))
+    meta["invocations"] = earlier + [{"started": meta["started"], "wall_s": meta["sweep_wall_s"],
+                                      "runs_executed": executed, "runs_reused": len(records) - executed}]
+    meta["sweep_wall_s_total"] = sum(i["wall_s"] for i in meta["invocations"])
     write_outputs(out_root, records, meta, args.png, args.convergence_png)
     print(f"sweep wall time {meta['sweep_wall_s']:.0f} s; {out_root}/runs.json, runs.csv, tables.md; {args.png}")
     return 0

@@ -30,6 +30,8 @@ struct WaterParticleViews
     scalar_view div_v_w_p; //!< divergence of the water velocity, 1/s
     //! Index of the prescribed pore-pressure condition, -1 if free.
     int_view p_w_condition_p;
+    //! Index of the water inflow feeding the point, -1 if none.
+    int_view inflow_p;
 
     WaterParticleViews() = default;
 
@@ -42,6 +44,7 @@ struct WaterParticleViews
         , v_w_p( "v_w_p", num_points )
         , div_v_w_p( "div_v_w_p", num_points )
         , p_w_condition_p( "p_w_condition_p", num_points )
+        , inflow_p( "inflow_p", num_points )
     {
     }
 

@@ -138,8 +138,8 @@ std::vector<double> readSnapshotTimes( TableReader& r )
     const toml::array* arr = node->as_array();
     if ( !arr )
     {
-        r.diag().mismatch( *node, path,
-                           "an array of stage times in s, strictly increasing" );
+        r.diag().mismatch(
+            *node, path, "an array of stage times in s, strictly increasing" );
         return {};
     }
     std::vector<double> times;
@@ -152,7 +152,8 @@ std::vector<double> readSnapshotTimes( TableReader& r )
         if ( !times.empty() && !( *t > times.back() ) )
         {
             r.diag().keyError( *arr->get( k ), indexed( path, k ),
-                               "expected a time > " + formatNumber( times.back() ) +
+                               "expected a time > " +
+                                   formatNumber( times.back() ) +
                                    " s (snapshot times must increase "
                                    "strictly), found " +
                                    formatNumber( *t ) );
@@ -266,6 +267,39 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                 .value_or( load.length_m );
         load.time_function = readTimeFunction( r );
         result.push_back( load );
+    }
+    return result;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<WaterInflow> readInflows( const toml::array& array,
+                                      const std::string& prefix,
+                                      Diagnostics& diag )
+{
+    std::vector<WaterInflow> result;
+    for ( std::size_t k = 0; k < array.size(); ++k )
+    {
+        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
+                       diag );
+        r.checkKeys( { "where", "box_m", "flux_m_per_s", "length_m",
+                       "time_function", "ponding" },
+                     "[[stages.inflows]]" );
+        WaterInflow inflow;
+        inflow.points = readSelection( r );
+        inflow.flux_m_per_s =
+            r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
+                      "m/s (rainfall intensity, volume per area and time)",
+                      Need::Required )
+                .value_or( 0.0 );
+        inflow.length_m =
+            r.number( "length_m", Range::above( 0.0 ),
+                      "m (the length of surface receiving the flux)",
+                      Need::Required )
+                .value_or( inflow.length_m );
+        inflow.time_function = readTimeFunction( r );
+        inflow.ponding =
+            r.boolean( "ponding", Need::Optional ).value_or( inflow.ponding );
+        result.push_back( inflow );
     }
     return result;
 }

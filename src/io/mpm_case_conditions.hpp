@@ -42,6 +42,11 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix,
                                   Diagnostics& diag );
 
+//! [[stages.inflows]]: prescribed water inflow (rainfall) on points.
+std::vector<WaterInflow> readInflows( const toml::array& array,
+                                      const std::string& prefix,
+                                      Diagnostics& diag );
+
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );
 

@@ -99,6 +99,22 @@ struct PointSelection
     std::array<Point2, 2> box_m = { Point2{ 0.0, 0.0 }, Point2{ 0.0, 0.0 } };
 };
 
+/*!
+  Prescribed water inflow (rainfall of intensity flux_m_per_s on a surface
+  of length length_m, times f(t)): the water volume flux * length * dt of a
+  step is added to the selected points in proportion to their volume (a
+  mass-conservative source in Eq. 8). With ponding, a selected point that
+  saturates keeps p_w <= 0 (the excess runs off).
+*/
+struct WaterInflow
+{
+    PointSelection points;
+    double flux_m_per_s = 0.0;
+    double length_m = 1.0;
+    TimeFunction time_function;
+    bool ponding = true;
+};
+
 //! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t).
 struct PorePressureCondition
 {
@@ -198,6 +214,8 @@ struct StageConfig
     std::vector<PorePressureCondition> pore_pressures;
     //! Loads active in this stage.
     std::vector<PointLoad> loads;
+    //! Water inflows (rainfall) active in this stage.
+    std::vector<WaterInflow> inflows;
 };
 
 struct GridConfig

@@ -291,8 +291,8 @@ class CaseParser
             return;
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
-                       "remove_points_leaving_grid",
-                       "instability_speed_factor", "inertia_scaling" },
+                       "remove_points_leaving_grid", "instability_speed_factor",
+                       "inertia_scaling" },
                      "[solver]" );
         SolverConfig& s = _config.solver;
         s.courant_number = r.number( "courant_number",
@@ -314,10 +314,9 @@ class CaseParser
             r.number( "instability_speed_factor", Range::above( 0.0 ), "",
                       Need::Optional )
                 .value_or( s.instability_speed_factor );
-        s.inertia_scaling =
-            r.number( "inertia_scaling", Range::atLeast( 1.0 ),
-                      "(inertial mass factor)", Need::Optional )
-                .value_or( s.inertia_scaling );
+        s.inertia_scaling = r.number( "inertia_scaling", Range::atLeast( 1.0 ),
+                                      "(inertial mass factor)", Need::Optional )
+                                .value_or( s.inertia_scaling );
     }
 
     void parseStages( TableReader& root )
@@ -336,9 +335,8 @@ class CaseParser
             r.checkKeys( { "name", "type", "gravity_m_per_s2", "damping",
                            "duration_s", "ke_ratio_tolerance",
                            "snapshot_interval_s", "snapshot_times_s",
-                           "reset_displacement",
-                           "materials", "boundaries", "pore_pressures",
-                           "loads" },
+                           "reset_displacement", "materials", "boundaries",
+                           "pore_pressures", "loads", "inflows" },
                          "[[stages]]" );
             StageConfig stage;
             if ( const auto name = r.string( "name", Need::Required ) )
@@ -393,6 +391,11 @@ class CaseParser
                                                "[[stages.boundaries]]" ) )
                 stage.boundaries = Impl::readBoundaries(
                     *b, path + ".boundaries", _analysis, _diag );
+            if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
+                if ( const auto* f = r.tableArray( "inflows", Need::Optional,
+                                                   "[[stages.inflows]]" ) )
+                    stage.inflows =
+                        Impl::readInflows( *f, path + ".inflows", _diag );
             if ( !Impl::rejectIfDry( r, "pore_pressures", _analysis ) )
                 if ( const auto* p =
                          r.tableArray( "pore_pressures", Need::Optional,

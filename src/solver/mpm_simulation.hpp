@@ -222,7 +222,8 @@ class Simulation
         }
         porePressureUpdate( exec, particles, water_particles, materials, water,
                             dt, analysis == AnalysisType::Saturated,
-                            conditions.prescribed_p_w );
+                            conditions.prescribed_p_w, conditions.inflow_rate,
+                            conditions.inflow_ponding );
         stressUpdate( exec, particles, materials, dt );
     }
 

@@ -110,6 +110,7 @@ void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
     Kokkos::deep_copy( wv.k_rel_p, k_rel_h );
     Kokkos::deep_copy( wv.n_p, n_h );
     Kokkos::deep_copy( wv.p_w_condition_p, -1 );
+    Kokkos::deep_copy( wv.inflow_p, -1 );
     (void)water;
 }
 
@@ -127,6 +128,12 @@ struct StageConditions
     Kokkos::View<double*, device_type> prescribed_p_w{ "prescribed_p_w", 0 };
     //! Current force on one point of each load group, N.
     LoadForceView<ExecSpace> load_force{ "load_force", 0 };
+    //! Current water inflow of each inflow per unit point volume, 1/s.
+    Kokkos::View<double*, device_type> inflow_rate{ "inflow_rate", 0 };
+    //! 1 if the inflow ponds (caps p_w at 0 on its points), else 0.
+    Kokkos::View<int*, device_type> inflow_ponding{ "inflow_ponding", 0 };
+    std::vector<WaterInflow> inflows;
+    std::vector<double> inflow_volumes; //!< volume of the points fed, m^3/m
     std::vector<PorePressureCondition> pore_pressures;
     std::vector<PointLoad> loads;
     std::vector<int> load_counts;              //!< points per load
@@ -195,8 +202,43 @@ struct StageConditions
                         condition_h( p ) = static_cast<int>( c );
             }
             Kokkos::deep_copy( wv.p_w_condition_p, condition_h );
+            applyInflows( stage, pv, wv, x, status, grid );
         }
         update( 0.0 );
+    }
+
+    //! Which points each water inflow feeds, and their volumes.
+    void applyInflows( const StageConfig& stage,
+                       const ParticleViews<ExecSpace>& pv,
+                       const WaterParticleViews<ExecSpace>& wv,
+                       const std::vector<double>& x,
+                       const std::vector<int>& status, const GridConfig& grid )
+    {
+        inflows = stage.inflows;
+        const auto vol_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), pv.vol_p );
+        auto inflow_h = Kokkos::create_mirror( wv.inflow_p );
+        Kokkos::deep_copy( inflow_h, -1 );
+        inflow_volumes.assign( inflows.size(), 0.0 );
+        inflow_rate =
+            Kokkos::View<double*, device_type>( "inflow_rate", inflows.size() );
+        inflow_ponding =
+            Kokkos::View<int*, device_type>( "inflow_ponding", inflows.size() );
+        auto ponding_h = Kokkos::create_mirror_view( inflow_ponding );
+        for ( std::size_t f = 0; f < inflows.size(); ++f )
+        {
+            const auto picked =
+                selectPoints( inflows[f].points, x, status, grid );
+            for ( std::size_t p = 0; p < picked.size(); ++p )
+                if ( picked[p] )
+                {
+                    inflow_h( p ) = static_cast<int>( f );
+                    inflow_volumes[f] += vol_h( p );
+                }
+            ponding_h( f ) = inflows[f].ponding ? 1 : 0;
+        }
+        Kokkos::deep_copy( inflow_ponding, ponding_h );
+        Kokkos::deep_copy( wv.inflow_p, inflow_h );
     }
 
     //! Values of every condition at stage time t.
@@ -224,6 +266,15 @@ struct StageConditions
             }
         }
         Kokkos::deep_copy( load_force, f_h );
+        auto rate_h = Kokkos::create_mirror_view( inflow_rate );
+        for ( std::size_t f = 0; f < inflows.size(); ++f )
+            rate_h( f ) =
+                inflow_volumes[f] > 0.0
+                    ? inflows[f].flux_m_per_s * inflows[f].length_m *
+                          evaluateTimeFunction( inflows[f].time_function, t ) /
+                          inflow_volumes[f]
+                    : 0.0;
+        Kokkos::deep_copy( inflow_rate, rate_h );
     }
 };
 

@@ -1,0 +1,77 @@
+#include <mpm_test_backends.hpp>
+#include <mpm_test_cases.hpp>
+
+#include <solver/mpm_run_stages.hpp>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+template <class ExecSpace>
+class Inflow : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( Inflow, mpm_test::Backends, mpm_test::BackendName );
+
+//! Water volume sum n S V of the points, m^3 per metre.
+double waterVolume( const mpm::HostSnapshot& snap )
+{
+    double volume = 0.0;
+    for ( int p = 0; p < snap.num_points; ++p )
+        volume += snap.n[p] * snap.S[p] * snap.vol[p];
+    return volume;
+}
+
+/*!
+  Rainfall as a prescribed inflow flux: a sealed (all grid edges
+  impermeable, grid top = soil top), weightless unsaturated column of the
+  paper's van Genuchten soil at 20 kPa suction receives q = 1e-4 m/s on its
+  0.25 m wide top for 2 s. The water it holds grows by q * width * t (the
+  compressibility of water is negligible at these pressures) and the water
+  spreads down (the lowest cell wets too).
+*/
+TYPED_TEST( Inflow, rainfall_flux_adds_its_water_volume )
+{
+    mpm::MaterialConfig soil =
+        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
+    soil.retention.model = mpm::RetentionType::VanGenuchten;
+    soil.retention.alpha_per_pa = 4.4e-4;
+    soil.retention.n = 3.04;
+    soil.retention.residual_saturation = 0.23;
+    mpm::StageConfig rain;
+    rain.name = "rain";
+    rain.type = mpm::StageType::Dynamic;
+    rain.gravity_m_per_s2 = { 0.0, 0.0 };
+    rain.duration_s = 2.0;
+    auto config = mpm_test::columnCase( 1.0, 0.25, soil, rain );
+    config.analysis = mpm::AnalysisType::Unsaturated;
+    config.grid.cells[1] = 4; // the top edge seals the soil's top
+    config.bodies[0].initial_pore_pressure_pa = -2.0e4;
+    mpm::WaterInflow inflow;
+    inflow.points.kind = mpm::PointSelection::Kind::SurfaceCells;
+    inflow.flux_m_per_s = 1.0e-4;
+    inflow.length_m = 0.25;
+    inflow.ponding = false;
+    config.stages[0].inflows = { inflow };
+
+    mpm::Simulation<TypeParam> sim( config );
+    const double before = waterVolume( mpm::hostSnapshot( sim ) );
+    mpm::RunObserver observer;
+    mpm::runStages( sim, config, observer );
+    const auto snap = mpm::hostSnapshot( sim );
+    const double added = waterVolume( snap ) - before;
+    const double expected = 1.0e-4 * 0.25 * 2.0;
+    EXPECT_NEAR( added, expected, 0.01 * expected );
+    // The lowest cell received water too.
+    double p_bottom = 0.0;
+    int count = 0;
+    for ( int p = 0; p < snap.num_points; ++p )
+        if ( snap.x[2 * p + 1] < 0.25 )
+        {
+            p_bottom += snap.p_w[p];
+            ++count;
+        }
+    EXPECT_GT( p_bottom / count, -2.0e4 + 100.0 );
+}
+
+} // namespace
