@@ -45,7 +45,8 @@ mpm::CaseConfig sceneCase( const int n, const mpm::AnalysisType analysis )
 template <class ExecSpace>
 void BM_sceneStep( benchmark::State& state, const mpm::AnalysisType analysis )
 {
-    const auto config = sceneCase( static_cast<int>( state.range( 0 ) ), analysis );
+    const auto config =
+        sceneCase( static_cast<int>( state.range( 0 ) ), analysis );
     mpm::Simulation<ExecSpace> sim( config );
     const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
     // A few steps so the timed state has stresses and flow.
@@ -81,13 +82,22 @@ void BM_stepUnsaturated( benchmark::State& state )
     BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Unsaturated );
 }
 
-#define SCENE_BENCHMARKS( SPACE )                                             \
-    BENCHMARK_TEMPLATE( BM_stepDry, SPACE )                                   \
-        ->Arg( 21 )->Arg( 65 )->Unit( benchmark::kMicrosecond )->UseRealTime(); \
-    BENCHMARK_TEMPLATE( BM_stepSaturated, SPACE )                             \
-        ->Arg( 21 )->Arg( 65 )->Unit( benchmark::kMicrosecond )->UseRealTime(); \
-    BENCHMARK_TEMPLATE( BM_stepUnsaturated, SPACE )                           \
-        ->Arg( 21 )->Arg( 65 )->Unit( benchmark::kMicrosecond )->UseRealTime()
+#define SCENE_BENCHMARKS( SPACE )                                              \
+    BENCHMARK_TEMPLATE( BM_stepDry, SPACE )                                    \
+        ->Arg( 21 )                                                            \
+        ->Arg( 65 )                                                            \
+        ->Unit( benchmark::kMicrosecond )                                      \
+        ->UseRealTime();                                                       \
+    BENCHMARK_TEMPLATE( BM_stepSaturated, SPACE )                              \
+        ->Arg( 21 )                                                            \
+        ->Arg( 65 )                                                            \
+        ->Unit( benchmark::kMicrosecond )                                      \
+        ->UseRealTime();                                                       \
+    BENCHMARK_TEMPLATE( BM_stepUnsaturated, SPACE )                            \
+        ->Arg( 21 )                                                            \
+        ->Arg( 65 )                                                            \
+        ->Unit( benchmark::kMicrosecond )                                      \
+        ->UseRealTime()
 
 SCENE_BENCHMARKS( Kokkos::Serial );
 #ifdef KOKKOS_ENABLE_OPENMP

@@ -73,7 +73,7 @@ struct WaterGridViews
     vector_view f_w_i;
     //! Drag per unit water volume fraction, sum N n S mu / (k k_rel) V (kg/s).
     scalar_view q_i;
-    vector_view v_w_i; //!< water velocity at the end of the step, m/s
+    vector_view v_w_i;  //!< water velocity at the end of the step, m/s
     vector_view dv_w_i; //!< water velocity increment of the step, m/s
     //! Bit mask: node_fix_x / node_fix_y tie that water velocity component
     //! to the solid's (impermeable).

@@ -45,9 +45,9 @@ struct RetentionConfig
     RetentionType model = RetentionType::Saturated;
     double residual_saturation = 0.0;
     double saturated_saturation = 1.0;
-    double alpha_per_pa = 0.0; //!< van Genuchten alpha
-    double n = 2.0;            //!< van Genuchten n
-    double alpha_per_m = 0.0;  //!< Gardner alpha (per metre of head)
+    double alpha_per_pa = 0.0;     //!< van Genuchten alpha
+    double n = 2.0;                //!< van Genuchten n
+    double alpha_per_m = 0.0;      //!< Gardner alpha (per metre of head)
     double suction_range_pa = 1.0; //!< Linear: suction where S reaches S_res
     double k_rel_min = 0.0;        //!< floor on k_rel
 };

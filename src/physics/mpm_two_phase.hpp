@@ -25,8 +25,8 @@ namespace physics
 */
 struct TwoPhaseNodalUpdate
 {
-    double dt;      //!< time step, s
-    double damping; //!< local damping coefficient
+    double dt;                    //!< time step, s
+    double damping;               //!< local damping coefficient
     double inertia_scaling = 1.0; //!< factor on the inertial masses
 
     struct Result
