@@ -137,6 +137,21 @@ RunStatus runCase( const CaseConfig& config, const RunOptions& options )
     metrics["dt_s"] = summary.dt_max_s;
     metrics["dt_min_s"] = summary.steps > 0 ? summary.dt_min_s : 0.0;
     metrics["removed_points"] = sim.num_removed;
+    // Which limit set the step.
+    const WaveSpeedLimit limit = sim.waveSpeedLimit();
+    metrics["time_step"] = {
+        { "rule", config.solver.dt_s > 0.0
+                      ? "fixed dt_s, checked against the CFL limit"
+                      : "automatic: courant_number x cell / (fastest wave "
+                        "speed + point speed)" },
+        { "limiting_wave",
+          sim.twoPhase() ? "undrained mixture or pore-water wave (saturated "
+                           "fluid stiffness, drag implicit)"
+                         : "P wave of the skeleton" },
+        { "courant_number", config.solver.courant_number },
+        { "inertia_scaling", config.solver.inertia_scaling },
+        { "final_cfl_limit_s", limit.dt_limit },
+        { "final_max_wave_speed_m_per_s", limit.max_wave_speed } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage ) );

@@ -503,10 +503,14 @@ double greenAmptTime( const double z, const double K, const double d_theta,
   imposed cell puts the effective ponded surface ~0.2 m lower, well inside
   the factor.
 
-  Kinetic energy bound: the suction stress lost by wetting (S s = 11.6
-  kPa) unloads the skeleton; the energy released is at most that of the
-  whole column, 1/2 b q^2 H / E_c with q = S s, plus the gravity work of
-  the water that enters (its weight times the column height).
+  Kinetic energy bound: wetting relieves the suction stress q = S s =
+  11.6 kPa (the column swells) and hangs the weight of the water that
+  enters, d_theta rho_w g, on the skeleton through the drag. The front
+  moves at ~0.2 m/s, far below the ~90 m/s skeleton wave, so the loading
+  is quasi-static and monotone; the energy is at most that of both loads
+  applied at once to the whole drained column, 1/2 F.u_s =
+  1/2 b ((d_theta rho_w g)^2 H^3 / 3 + d_theta rho_w g q H^2 + q^2 H) /
+  E_c (the cross term counted with the unfavourable sign).
 */
 TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
 {
@@ -539,37 +543,50 @@ TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
     ASSERT_FALSE( snaps.empty() );
 
     const double S_mid = 0.5 * ( soil.retention.residual_saturation + 1.0 );
-    double previous = 0.0;
+    std::map<double, double> front; // stage time -> depth (S)
     std::string history;
     for ( const auto& [t, snap] : snaps )
     {
         EXPECT_EQ( countNonFinite( snap ), 0 ) << "t = " << t;
         const double z_S = frontDepth( snap, snap.S, S_mid, H );
         const double z_p = frontDepth( snap, snap.p_w, -0.5 * suction, H );
-        char line[128];
+        front[t] = z_S;
+        char line[96];
         std::snprintf( line, sizeof( line ),
-                       "  t %.2f s: front %.3f m (S), "
-                       "%.3f m (p_w)\n",
-                       t, z_S, z_p );
+                       "  t %.2f s: front %.3f m (S), %.3f m (p_w)\n", t, z_S,
+                       z_p );
         history += line;
-        EXPECT_GE( z_S, previous - 0.01 ) << "front receded at t = " << t;
-        previous = std::max( previous, z_S );
-        const auto reference = green_ampt.find( std::round( t * 10.0 ) / 10.0 );
-        if ( reference != green_ampt.end() )
-        {
-            std::printf( "wetting front at %.1f s: %.3f m (S), %.3f m (p_w); "
-                         "Green-Ampt %.2f m\n",
-                         t, z_S, z_p, reference->second );
-            EXPECT_GT( z_S, reference->second / 1.5 )
-                << "t = " << t << " s; front history:\n"
-                << history;
-            EXPECT_LT( z_S, reference->second * 1.5 ) << "t = " << t << " s";
-        }
     }
-    std::printf( "wetting front history:\n%s", history.c_str() );
-    const double q = S0 * suction;
-    const double ke_bound = 0.5 * h * q * q * H / constrainedModulus( soil ) +
-                            d_theta * rho_water * h * H * gravity * H;
+    std::printf( "wetting front (depth below the initial surface):\n%s",
+                 history.c_str() );
+    double deepest = 0.0;
+    for ( const auto& [t, z] : front )
+    {
+        EXPECT_GE( z, deepest - 0.01 )
+            << "the front receded at t = " << t << " s:\n"
+            << history;
+        deepest = std::max( deepest, z );
+    }
+    for ( const auto& [t, z_ref] : green_ampt )
+    {
+        const auto it = front.lower_bound( t - 1.0e-9 );
+        ASSERT_TRUE( it != front.end() && std::abs( it->first - t ) < 1.0e-9 )
+            << "no snapshot at " << t << " s";
+        std::printf( "wetting front at %.1f s: %.3f m, Green-Ampt %.2f m "
+                     "(ratio %.2f)\n",
+                     t, it->second, z_ref, it->second / z_ref );
+        EXPECT_GT( it->second, z_ref / 1.5 )
+            << "front at " << t << " s against Green-Ampt " << z_ref << " m";
+        EXPECT_LT( it->second, z_ref * 1.5 )
+            << "front at " << t << " s against Green-Ampt " << z_ref << " m";
+    }
+
+    const double rho_a = d_theta * rho_water, q = S0 * suction;
+    const double ke_bound =
+        0.5 * h *
+        ( rho_a * rho_a * gravity * gravity * H * H * H / 3.0 +
+          rho_a * gravity * q * H * H + q * q * H ) /
+        constrainedModulus( soil );
     std::printf( "wetting: KE max %.3g J (bound %.3g J)\n", recorder.ke_max[1],
                  ke_bound );
     EXPECT_LT( recorder.ke_max[1], ke_bound );
@@ -720,9 +737,11 @@ void liftTopRowTo( mpm::Simulation<ExecSpace>& sim, const double y_top )
   the grid line and sit within a few 1e-4 h of it. Checks: no NaN, and
   speeds and kinetic energy within the physical bounds of the sudden
   loading: the energy bound 1/2 F.u_s of the drained column under its full
-  weight (as in test 3), and a speed bound from it, v <= sqrt(2 KE_bound
-  / m_min) with the mass of the lightest row (a row of points cannot move
-  faster than if it received all of the released energy).
+  weight and, unsaturated, the suction stress S s as a surface load (as
+  in tests 1b and 3; the first mode alone takes 98.5 % of it, so a
+  drained column comes close to it), and a speed bound from it,
+  v <= sqrt(2 KE_bound / m_row) with the mass of one row of points (a row
+  cannot move faster than if it received all of the released energy).
 */
 TYPED_TEST( HardCases, tiny_nodal_mass_keeps_velocities_bounded )
 {
@@ -769,8 +788,14 @@ TYPED_TEST( HardCases, tiny_nodal_mass_keeps_velocities_bounded )
             EXPECT_EQ( countNonFinite( snap ), 0 ) << "offset " << offset;
             const double rho = mixtureMass( initial ) / ( H * h );
             const double rg = rho * gravity;
-            const double ke_bound = 0.5 * h * rg * rg * H * H * H /
-                                    ( 3.0 * constrainedModulus( soil ) );
+            // Unsaturated: the suction stress S s acts as a surface load q.
+            const double q = analysis == mpm::AnalysisType::Unsaturated
+                                 ? -initial.S[0] * initial.p_w[0]
+                                 : 0.0;
+            const double ke_bound =
+                0.5 * h *
+                ( rg * rg * H * H * H / 3.0 + rg * q * H * H + q * q * H ) /
+                constrainedModulus( soil );
             const double v_bound = std::sqrt( 2.0 * ke_bound / m_row );
             std::printf(
                 "tiny nodal mass (%s, top row %.0e h above a grid "
@@ -872,11 +897,19 @@ TYPED_TEST( HardCases, points_leaving_the_grid )
         const double t_end = 0.6;
         const auto config = makeCase( true, t_end );
         mpm::Simulation<TypeParam> sim( config );
-        mpm::RunObserver observer;
-        ASSERT_NO_THROW( mpm::runStages( sim, config, observer ) );
+        double m_s = 0.0;
+        for ( const double m : mpm::hostSnapshot( sim ).mass )
+            m_s += m;
+        Recorder recorder;
+        ASSERT_NO_THROW( mpm::runStages( sim, config, recorder ) );
         const auto snap = mpm::hostSnapshot( sim );
-        std::printf( "removed %d of %d points\n", sim.num_removed,
-                     snap.num_points );
+        // Free fall bounds the kinetic energy: 1/2 M (g t)^2.
+        const double ke_free = 0.5 * m_s * ( g * t_end ) * ( g * t_end );
+        std::printf( "removed %d of %d points, KE max %.4g J (free fall of "
+                     "the whole block %.4g J)\n",
+                     sim.num_removed, snap.num_points, recorder.ke_max[0],
+                     ke_free );
+        EXPECT_LE( recorder.ke_max[0], ke_free * ( 1.0 + 1.0e-9 ) );
         EXPECT_GT( sim.num_removed, 0 );
         EXPECT_LT( sim.num_removed, snap.num_points );
         EXPECT_EQ( sim.numActivePoints() + sim.num_removed, snap.num_points );
