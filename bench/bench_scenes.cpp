@@ -84,16 +84,19 @@ void BM_stepUnsaturated( benchmark::State& state )
 
 #define SCENE_BENCHMARKS( SPACE )                                              \
     BENCHMARK_TEMPLATE( BM_stepDry, SPACE )                                    \
+        ->ArgName( "cells_high" )                                              \
         ->Arg( 21 )                                                            \
         ->Arg( 65 )                                                            \
         ->Unit( benchmark::kMicrosecond )                                      \
         ->UseRealTime();                                                       \
     BENCHMARK_TEMPLATE( BM_stepSaturated, SPACE )                              \
+        ->ArgName( "cells_high" )                                              \
         ->Arg( 21 )                                                            \
         ->Arg( 65 )                                                            \
         ->Unit( benchmark::kMicrosecond )                                      \
         ->UseRealTime();                                                       \
     BENCHMARK_TEMPLATE( BM_stepUnsaturated, SPACE )                            \
+        ->ArgName( "cells_high" )                                              \
         ->Arg( 21 )                                                            \
         ->Arg( 65 )                                                            \
         ->Unit( benchmark::kMicrosecond )                                      \
