@@ -126,9 +126,48 @@ class SnapshotSchedule
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Time over which a quasi-static stage's kinetic-energy ratio must stay
+  below its tolerance: the period 4 L / c of the slowest (drained skeleton)
+  wave over the bodies' extent L, c = sqrt(E_c / rho) / sqrt(inertia
+  scaling), the smallest over the stage's materials. The ratio passes
+  through zero at every turning point of an oscillation, so a single
+  value below the tolerance does not mean equilibrium.
+*/
+inline double quasiStaticWindow( const CaseConfig& config,
+                                 const StageConfig& stage )
+{
+    double x_min = 1.0e300, x_max = -1.0e300, y_min = 1.0e300, y_max = -1.0e300;
+    for ( const BodyConfig& body : config.bodies )
+        for ( const Point2& v : body.polygon_m )
+        {
+            x_min = std::min( x_min, v[0] );
+            x_max = std::max( x_max, v[0] );
+            y_min = std::min( y_min, v[1] );
+            y_max = std::max( y_max, v[1] );
+        }
+    const double extent = std::max( x_max - x_min, y_max - y_min );
+    double c_min = 1.0e300;
+    for ( const MaterialConfig& m : stage.materials )
+    {
+        const double E_c =
+            m.youngs_modulus_pa * ( 1.0 - m.poisson_ratio ) /
+            ( ( 1.0 + m.poisson_ratio ) * ( 1.0 - 2.0 * m.poisson_ratio ) );
+        const double rho =
+            config.analysis == AnalysisType::Dry
+                ? m.density_kg_per_m3
+                : ( 1.0 - m.porosity ) * m.solid_density_kg_per_m3 +
+                      m.porosity * config.water.density_kg_per_m3;
+        c_min = std::min( c_min, std::sqrt( E_c / rho ) );
+    }
+    return 4.0 * extent / c_min * std::sqrt( config.solver.inertia_scaling );
+}
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Runs every stage of `config` on `sim`: quasi-static stages until
-  E_kin / max E_kin < tolerance (or their duration), dynamic stages for
-  their duration. Snapshots at the requested interval and at stage ends.
+  E_kin / max E_kin stays below the tolerance for quasiStaticWindow (or
+  their duration), dynamic stages for their duration. Snapshots at the requested
+  interval and at stage ends.
 */
 template <class ExecSpace>
 RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
@@ -158,6 +197,9 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         progress.stage_index = static_cast<int>( s );
         progress.stage_duration_s = stage.duration_s;
         double ke_max = 0.0;
+        const double window_s =
+            quasi_static ? quasiStaticWindow( config, stage ) : 0.0;
+        double below_since = -1.0; // stage time the ratio went below tol
         const SnapshotSchedule schedule( stage );
         double next_snapshot = schedule.next( 0.0 );
         const double end_tolerance = 1.0e-12 * stage.duration_s;
@@ -200,8 +242,13 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 ke_max = std::max( ke_max, progress.kinetic_energy_j );
                 stage_summary.ke_ratio =
                     ke_max > 0.0 ? progress.kinetic_energy_j / ke_max : 0.0;
+                if ( stage_summary.ke_ratio >= stage.ke_ratio_tolerance )
+                    below_since = -1.0;
+                else if ( below_since < 0.0 )
+                    below_since = progress.stage_time_s;
                 if ( progress.stage_step >= min_quasi_static_steps &&
-                     stage_summary.ke_ratio < stage.ke_ratio_tolerance )
+                     below_since >= 0.0 &&
+                     progress.stage_time_s - below_since >= window_s )
                 {
                     stage_summary.converged = true;
                     break;
