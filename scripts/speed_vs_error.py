@@ -15,8 +15,8 @@ scripts/verification/{terzaghi,liakopoulos}.py, and writes
     DIR/runs/<id>/{case.toml,metrics.json,particles.h5}   one folder per run
     DIR/runs.json, DIR/runs.csv                           every run
     DIR/tables.md                                         the tables of docs/speed-vs-error.md
-    docs/speed-vs-error.png                               error vs wall time, Pareto fronts
-    docs/speed-vs-error-convergence.png                   Terzaghi error vs cell size
+    docs/speed-vs-error.png                               error vs wall time with the Pareto
+                                                          fronts; Terzaghi error vs cell size
 
 DIR defaults to results/speed_vs_error. --reuse keeps the runs whose folder
 already holds a scored metrics.json for the same case text; --report-only
@@ -555,15 +555,53 @@ def tables(records, total_s):
     return "\n".join(out) + "\n"
 
 
-def figures(records, png, conv_png):
+def place_labels(ax, points, texts, min_gap=0.05):
+    """Labels to the right of the points, pushed apart vertically (axes
+    fraction) so that they do not overlap; a thin line joins a moved label."""
+    fig = ax.figure
+    fig.canvas.draw()
+    to_axes = ax.transAxes.inverted()
+    pos = [to_axes.transform(ax.transData.transform(p)) for p in points]
+    order = sorted(range(len(points)), key=lambda i: -pos[i][1])
+    ys = {}
+    last = None
+    for i in order:
+        y = pos[i][1] + 0.02
+        if last is not None and y > last - min_gap:
+            y = last - min_gap
+        ys[i] = y
+        last = y
+    # If the lowest label fell out of the axes, shift the stack up.
+    low = min(ys.values()) if ys else 0.0
+    if low < 0.02:
+        for i in ys:
+            ys[i] += 0.02 - low
+    for i, text in enumerate(texts):
+        x = min(pos[i][0] + 0.04, 0.80)
+        moved = abs(ys[i] - pos[i][1]) > 0.03 or x < pos[i][0] + 0.02
+        ax.annotate(text, xy=points[i], xycoords="data", xytext=(x, ys[i]), textcoords="axes fraction",
+                    fontsize=7, color="crimson", va="center", zorder=3.5,
+                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.75),
+                    arrowprops=dict(arrowstyle="-", color="crimson", lw=0.5, alpha=0.6) if moved else None)
+
+
+def figures(records, png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
 
     studies = [s for s in STUDIES if any(study_of(r) == s for r in records)]
-    fig, axes = plt.subplots(1, len(studies), figsize=(6.6 * len(studies), 6.4), squeeze=False)
-    for ax, study in zip(axes[0], studies):
+    conv = sorted([r for r in records if study_of(r) == "terzaghi" and "convergence" in r["groups"]
+                   and r.get("status") == "completed"], key=lambda r: r["cells"])
+    n_panels = len(studies) + (1 if len(conv) >= 2 else 0)
+    ncols = 2 if n_panels > 1 else 1
+    nrows = (n_panels + ncols - 1) // ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(7.2 * ncols, 5.6 * nrows), squeeze=False)
+    flat = list(axes.flat)
+    for ax in flat[n_panels:]:
+        ax.set_visible(False)
+    for ax, study in zip(flat, studies):
         rows = [r for r in records if study_of(r) == study and r.get("status") == "completed"]
         front = pareto(rows)
         ids = {r["id"] for r in front}
@@ -587,10 +625,6 @@ def figures(records, png, conv_png):
         for r in front:
             ax.scatter(r["wall_s"], r["error"], s=70, marker=markers.get(r["cells"], "x"),
                        color=colours[r[colour_key]], edgecolors="crimson", linewidths=1.6, zorder=4)
-        for i, r in enumerate(front):
-            dy = 8 if i % 2 == 0 else -13
-            ax.annotate(short_label(r), (r["wall_s"], r["error"]), textcoords="offset points",
-                        xytext=(6, dy), fontsize=7, color="crimson", zorder=5)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.grid(True, which="both", alpha=0.25)
@@ -605,16 +639,9 @@ def figures(records, png, conv_png):
                     for c in sorted({r["cells"] for r in rows}) if c in markers]
         handles.append(Line2D([], [], ls="-", marker="o", color="crimson", mfc="none", label="Pareto front"))
         ax.legend(handles=handles, fontsize=7.5, loc="upper right", framealpha=0.85)
-    fig.suptitle("rainslide speed vs error; Pareto labels: cells (c), points per direction (p), "
-                 "water bulk modulus (K), inertia scaling (f), Courant number (C)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
-    plt.close(fig)
-
-    conv = sorted([r for r in records if study_of(r) == "terzaghi" and "convergence" in r["groups"]
-                   and r.get("status") == "completed"], key=lambda r: r["cells"])
-    if conv_png and len(conv) >= 2:
-        fig, ax = plt.subplots(figsize=(6.0, 4.6))
+        place_labels(ax, [(r["wall_s"], r["error"]) for r in front], [short_label(r) for r in front])
+    if len(conv) >= 2:
+        ax = flat[len(studies)]
         h = np.array([1.0 / r["cells"] for r in conv])
         e1 = np.array([r["l2_error_max"] for r in conv])
         e2 = np.array([r["l2_error_cell_max"] for r in conv])
@@ -623,19 +650,22 @@ def figures(records, png, conv_png):
         ax.loglog(h, e1[0] * (h / h[0]), "k:", lw=0.8, label="slope 1")
         ax.loglog(h, e2[0] * (h / h[0]) ** 2, "k--", lw=0.8, label="slope 2")
         for hi, r in zip(h, conv):
-            ax.annotate(f"{r['wall_s']:.1f} s", (hi, r["l2_error_cell_max"]), textcoords="offset points",
-                        xytext=(4, -12), fontsize=7)
+            ax.annotate(f"{r['cells']} cells, {r['wall_s']:.1f} s", (hi, r["l2_error_max"]),
+                        textcoords="offset points", xytext=(4, 6), fontsize=7)
         ax.set_xlabel("cell size h (m)")
         ax.set_ylabel("max relative L2 error over Tv = 0.05 ... 1")
-        ax.set_title("Terzaghi convergence (2x2 points, K_w = 2e9 Pa, Courant 0.5)", fontsize=9)
+        ax.set_title("Terzaghi convergence (2x2 points, K_w = 2e9 Pa, Courant 0.5)", fontsize=10)
         ax.grid(True, which="both", alpha=0.25)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(conv_png, dpi=120)
-        plt.close(fig)
+        ax.legend(fontsize=8, loc="lower right")
+    fig.suptitle("rainslide speed vs error (2-core machine, serial backend). Pareto labels: cells (c), "
+                 "points per direction (p), water bulk modulus K_w (K), inertia scaling (f), Courant number (C)",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
 
 
-def write_outputs(out_root, records, meta, png, conv_png):
+def write_outputs(out_root, records, meta, png):
     with open(os.path.join(out_root, "runs.json"), "w") as f:
         json.dump({"meta": meta, "runs": records}, f, indent=2)
     cols = ["id", "problem", "study", "groups", "status", "geostatic", "cells", "points_per_cell", "bulk_modulus_pa",
@@ -660,7 +690,7 @@ def write_outputs(out_root, records, meta, png, conv_png):
             w.writerow(row)
     with open(os.path.join(out_root, "tables.md"), "w") as f:
         f.write(tables(records, meta.get("sweep_wall_s_total", meta.get("sweep_wall_s", 0.0))))
-    figures(records, png, conv_png)
+    figures(records, png)
 
 
 def main():
@@ -670,10 +700,12 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "speed_vs_error"))
     ap.add_argument("--problems", default="terzaghi,liakopoulos")
     ap.add_argument("--png", default=os.path.join(ROOT, "docs", "speed-vs-error.png"))
-    ap.add_argument("--convergence-png", default=os.path.join(ROOT, "docs", "speed-vs-error-convergence.png"))
     ap.add_argument("--reuse", action="store_true", help="keep scored runs of an earlier sweep with the same case text")
     ap.add_argument("--report-only", action="store_true", help="only redraw tables and figures from runs.json")
-    ap.add_argument("--only", default=None, help="run only the runs whose id matches this regular expression")
+    ap.add_argument("--only", default=None, help="run only the runs whose id matches this regular expression "
+                    "(with --reuse the other runs of runs.json are kept in the outputs)")
+    ap.add_argument("--rerun", default=None, help="with --reuse: run again the runs whose id matches this "
+                    "regular expression (e.g. to re-time runs that shared the machine)")
     ap.add_argument("--dry-run", action="store_true", help="write the case files and list the runs only")
     args = ap.parse_args()
     out_root = os.path.abspath(args.out)
@@ -682,7 +714,7 @@ def main():
     if args.report_only:
         with open(os.path.join(out_root, "runs.json")) as f:
             data = json.load(f)
-        write_outputs(out_root, data["runs"], data["meta"], args.png, args.convergence_png)
+        write_outputs(out_root, data["runs"], data["meta"], args.png)
         return 0
 
     binary = os.path.abspath(args.binary)
@@ -699,6 +731,7 @@ def main():
         plan += [(s, terzaghi_case(bases["terzaghi"], s["params"])) for s in terzaghi_plan()]
     if "liakopoulos" in problems:
         plan += [(s, liakopoulos_case(bases["liakopoulos"], s["params"])) for s in liakopoulos_plan()]
+    full_plan = plan
     if args.only:
         plan = [(s, t) for s, t in plan if re.search(args.only, s["id"])]
     if args.dry_run:
@@ -713,7 +746,12 @@ def main():
 
     reference = {p: tomllib.loads(t) for p, t in bases.items()}
     git = subprocess.run(["git", "-C", ROOT, "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
-    meta = {"binary": binary, "git_head": git, "machine_cores": os.cpu_count(), "backend": "serial",
+    import hashlib
+    with open(binary, "rb") as f:
+        sha = hashlib.sha256(f.read()).hexdigest()
+    meta = {"binary": binary, "binary_sha256": sha,
+            "binary_mtime": time.strftime("%Y-%m-%d %H:%M:%S", time.gmtime(os.path.getmtime(binary))),
+            "git_head_at_sweep": git, "machine_cores": os.cpu_count(), "backend": "serial",
             "threads": 1, "started": time.strftime("%Y-%m-%d %H:%M:%S %Z")}
     previous = {}
     earlier = []
@@ -725,7 +763,8 @@ def main():
     records = []
     t_start = time.perf_counter()
     for i, (spec, text) in enumerate(plan):
-        r = run_one(binary, out_root, spec, text, reference[spec["problem"]], previous)
+        again = args.rerun and re.search(args.rerun, spec["id"])
+        r = run_one(binary, out_root, spec, text, reference[spec["problem"]], {} if again else previous)
         records.append(r)
         err = r.get("error")
         print(f"[{i + 1}/{len(plan)}] {r['id']}: {r.get('status')}, "
@@ -738,12 +777,17 @@ def main():
         with open(os.path.join(out_root, "runs.json"), "w") as f:
             json.dump({"meta": meta, "runs": records}, f, indent=2)
     meta["sweep_wall_s"] = time.perf_counter() - t_start
-    meta["finished"] = time.strftime("%Y-%m-%d %H:%M:%S %Z")
     executed = sum(1 for r in records if not r.get("reused"))
+    if args.only and previous:
+        done = {r["id"] for r in records}
+        order = [s["id"] for s, _ in full_plan]
+        records += [r for i, r in previous.items() if i not in done]
+        records.sort(key=lambda r: order.index(r["id"]) if r["id"] in order else len(order))
+    meta["finished"] = time.strftime("%Y-%m-%d %H:%M:%S %Z")
     meta["invocations"] = earlier + [{"started": meta["started"], "wall_s": meta["sweep_wall_s"],
                                       "runs_executed": executed, "runs_reused": len(records) - executed}]
     meta["sweep_wall_s_total"] = sum(i["wall_s"] for i in meta["invocations"])
-    write_outputs(out_root, records, meta, args.png, args.convergence_png)
+    write_outputs(out_root, records, meta, args.png)
     print(f"sweep wall time {meta['sweep_wall_s']:.0f} s; {out_root}/runs.json, runs.csv, tables.md; {args.png}")
     return 0
 
