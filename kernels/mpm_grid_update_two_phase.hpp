@@ -15,13 +15,14 @@ namespace mpm
   \brief Grid update of the two-phase step on the active nodes: new solid
   and water velocities with the drag implicit (TwoPhaseNodalUpdate), the
   solid's boundary flags and the water's impermeability ties. The water
-  force and drag (per unit water volume) are scaled by the nodal
-  n S = m_w / (rho_w vol).
+  force (per unit water volume) is scaled by the nodal n S = m_w / (rho_w
+  vol); the drag comes from the nodal mean permeability (physics::nodalDrag).
 */
 template <class ExecSpace>
 void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                          WaterGridViews<ExecSpace>& wg, const double dt,
                          const double damping, const double water_density,
+                         const double water_viscosity,
                          const double inertia_scaling = 1.0 )
 {
     const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
@@ -52,13 +53,15 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
             const int flags_w = flags_w_i( i, j );
             // Nodal water volume fraction n S.
             const double nS = m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
+            const double drag = physics::nodalDrag(
+                nS, water_viscosity, vol_i( i, j ), q_i( i, j ) );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r = update(
-                    m_s_i( i, j ), m_w_i( i, j ), mv_s_i( i, j, d ),
-                    mv_w_i( i, j, d ), f_m_i( i, j, d ), nS * f_w_i( i, j, d ),
-                    nS * q_i( i, j ), flags & bit, flags_w & bit );
+                const auto r = update( m_s_i( i, j ), m_w_i( i, j ),
+                                       mv_s_i( i, j, d ), mv_w_i( i, j, d ),
+                                       f_m_i( i, j, d ), nS * f_w_i( i, j, d ),
+                                       drag, flags & bit, flags_w & bit );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;

@@ -20,9 +20,10 @@ namespace mpm
   the total (Bishop) stress sigma = sigma' - S p_w m (Eq. 11), and the
   water momentum (Eq. 9) integrated per unit water volume:
   f_w = sum N rho_w V g + sum p_w V grad N (exact integration by parts of
-  -grad p_w, no grad(nS) term lost), q = sum N n S mu / (k k_rel) V,
-  vol = sum N V; the grid update multiplies f_w and q by the nodal
-  n S = m_w / (rho_w vol).
+  -grad p_w, no grad(nS) term lost), the permeability sum
+  kv = sum N k k_rel V and vol = sum N V; the grid update forms the drag
+  from the nodal mean permeability kv / vol and the nodal n S =
+  m_w / (rho_w vol).
   `load_force` holds the force (N) on a point of each load condition.
 */
 template <class ExecSpace,
@@ -90,9 +91,8 @@ void p2gTwoPhase( const ExecSpace& exec_space,
             const double s_xx = sigma_p( p, 0 ) - bishop;
             const double s_yy = sigma_p( p, 1 ) - bishop;
             const double s_xy = sigma_p( p, 2 );
-            const double drag = physics::dragCoefficient(
-                n_p( p ), S_p( p ), water.viscosity,
-                materials[material_p( p )].permeability, k_rel_p( p ), vol );
+            const double permeability_volume =
+                materials[material_p( p )].permeability * k_rel_p( p ) * vol;
             double load[2] = { 0.0, 0.0 };
             if ( load_p( p ) >= 0 )
             {
@@ -115,7 +115,7 @@ void p2gTwoPhase( const ExecSpace& exec_space,
                 m_s_i( i, j ) += w[k] * m_s;
                 m_w_i( i, j ) += w[k] * m_w;
                 vol_i( i, j ) += w[k] * vol;
-                q_i( i, j ) += w[k] * drag;
+                q_i( i, j ) += w[k] * permeability_volume;
                 for ( int d = 0; d < 2; ++d )
                 {
                     mv_s_i( i, j, d ) += w[k] * m_s * v_s_p( p, d );

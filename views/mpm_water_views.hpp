@@ -71,7 +71,9 @@ struct WaterGridViews
     //! Water force per unit water volume fraction, sum N rho_w V g +
     //! sum p_w grad N V (N); times the nodal n S it is the water force.
     vector_view f_w_i;
-    //! Drag per unit water volume fraction, sum N n S mu / (k k_rel) V (kg/s).
+    //! Permeability sum N k k_rel V (m^4): kv / vol is the nodal mean
+    //! permeability of the drag (an average of permeabilities, not of
+    //! resistances, so a dry neighbour does not block a wetting front).
     scalar_view q_i;
     vector_view v_w_i;  //!< water velocity at the end of the step, m/s
     vector_view dv_w_i; //!< water velocity increment of the step, m/s

@@ -82,17 +82,18 @@ struct TwoPhaseNodalUpdate
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Drag of one point per unit water volume fraction,
-  n S mu / (k k_rel) V (kg/s): Eq. 9 is integrated per unit water volume,
-  and the nodal n S multiplies it at the node (see p2gTwoPhase).
+  \brief Nodal drag coefficient of Eq. 9 (kg/s) from nodal quantities:
+  Q = (n S)^2 mu V / k_bar with the nodal mean permeability
+  k_bar = sum N k k_rel V / sum N V. Averaging permeabilities (not the
+  resistances mu / (k k_rel)) lets water enter a dry neighbour at a wetting
+  front, where k_rel drops by ten orders of magnitude between two points.
 */
-KOKKOS_INLINE_FUNCTION double dragCoefficient( const double n, const double S,
-                                               const double viscosity,
-                                               const double permeability,
-                                               const double k_rel,
-                                               const double volume )
+KOKKOS_INLINE_FUNCTION double nodalDrag( const double nS,
+                                         const double viscosity,
+                                         const double volume,
+                                         const double permeability_volume )
 {
-    return n * S * viscosity / ( permeability * k_rel ) * volume;
+    return nS * nS * viscosity * volume * volume / permeability_volume;
 }
 
 //---------------------------------------------------------------------------//

@@ -206,7 +206,8 @@ class Simulation
                      conditions.load_force );
         findActiveNodes( exec, grid );
         gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping,
-                            water.density, solver.inertia_scaling );
+                            water.density, water.viscosity,
+                            solver.inertia_scaling );
         g2pVelocityTwoPhase( exec, particles, water_particles, grid, water_grid,
                              dt, solver.flip_fraction );
         p2gMomentumTwoPhase( exec, particles, water_particles, grid, water_grid,
