@@ -35,7 +35,7 @@ void BM_p2g( benchmark::State& state )
     {
         mpm::p2gMassMomentumForce<ExecSpace, Duplication>(
             space, sim.particles, sim.grid, problem.settings.gravity_x,
-            problem.settings.gravity_y );
+            problem.settings.gravity_y, sim.conditions.load_force );
         space.fence();
     }
     problem.setCounters( state );
@@ -104,7 +104,8 @@ void BM_gridUpdate( benchmark::State& state )
     {
         mpm::findActiveNodes( space, sim.grid );
         mpm::gridUpdateDry( space, sim.grid, problem.dt(),
-                            problem.settings.damping );
+                            problem.settings.damping,
+                            sim.solver.inertia_scaling );
         space.fence();
     }
     problem.setCounters( state );

@@ -107,8 +107,8 @@ void loadView( const std::vector<T>& values, const ViewType& view )
 //---------------------------------------------------------------------------//
 /*!
   \brief The block problem on ExecSpace in its prepared state, with the
-  phases of the MUSL step callable one by one to set up the input of the
-  kernel under test.
+  phases of the dry MUSL step (as in Simulation::advance) callable one by
+  one to set up the input of the kernel under test.
 */
 template <class ExecSpace>
 class BlockProblem
@@ -145,13 +145,15 @@ class BlockProblem
     void scatter()
     {
         mpm::p2gMassMomentumForce( space, sim.particles, sim.grid,
-                                   settings.gravity_x, settings.gravity_y );
+                                   settings.gravity_x, settings.gravity_y,
+                                   sim.conditions.load_force );
     }
     //! Active nodes and the nodal velocity update.
     void gridUpdate()
     {
         mpm::findActiveNodes( space, sim.grid );
-        mpm::gridUpdateDry( space, sim.grid, dt(), settings.damping );
+        mpm::gridUpdateDry( space, sim.grid, dt(), settings.damping,
+                            sim.solver.inertia_scaling );
     }
     //! G2P velocity and displacement increment.
     void g2p()

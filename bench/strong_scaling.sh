@@ -12,6 +12,9 @@
 #   BENCH_RUN_TAG: run in pieces (e.g. one kernel at a time on a shared
 #   machine): each tagged call keeps the raw files of the other tags and the
 #   table covers all of them. Without a tag, old raw files are removed first.
+#   BENCH_THREADS: OpenMP thread counts to run (default "1 2"; Serial runs
+#   with 1), e.g. the 1-thread part while another process holds the other
+#   core and the 2-thread part when the machine is idle (same BENCH_RUN_TAG).
 # Repetitions are randomly interleaved across benchmarks, so a burst of load
 # from other processes spreads over many benchmarks instead of spoiling the
 # medians of one; still, run on an otherwise idle machine.
@@ -43,23 +46,24 @@ suffix=${tag:+_$tag}
 # Timing settings: one thread per core, threads spread over the cores.
 export OMP_PROC_BIND=spread OMP_PLACES=threads
 
-# Benchmark names (one per line) matching a filter, for the given threads.
+# Names (one per line) of the kernel benchmarks, <kernel>/<backend>/<scatter>/
+# ..., that match the filter (other benchmarks in the binary are skipped).
 list_benchmarks() {
     "$binary" --kokkos-threads="$1" --benchmark_list_tests=true \
         --benchmark_filter="$filter" | grep -E '^[a-z0-9_]+/(Serial|OpenMP)/' || true
 }
 
-for nt in 1 2; do
-    run_filter=$filter
-    if [ "$nt" -gt 1 ]; then
-        # Only the OpenMP benchmarks, as an exact-name alternation.
-        names=$(list_benchmarks "$nt" | grep '/OpenMP/' | paste -sd '|' - || true)
-        if [ -z "$names" ]; then
-            echo "note: no OpenMP benchmark matches '$filter'; skipping $nt threads" >&2
-            continue
-        fi
-        run_filter="^($names)\$"
+for nt in ${BENCH_THREADS:-1 2}; do
+    # Serial once (1 thread), OpenMP at every thread count.
+    backends='/(Serial|OpenMP)/'
+    [ "$nt" -gt 1 ] && backends='/OpenMP/'
+    names=$(list_benchmarks "$nt" | grep -E "$backends" | paste -sd '|' - || true)
+    if [ -z "$names" ]; then
+        echo "note: no benchmark matches '$filter' at $nt thread(s)" >&2
+        continue
     fi
+    # Exact-name alternation.
+    run_filter="^($names)\$"
     out="$results/raw_nt$nt$suffix.json"
     echo "== $nt thread(s): $binary --kokkos-threads=$nt (filter '$filter')" >&2
     "$binary" --kokkos-threads="$nt" \

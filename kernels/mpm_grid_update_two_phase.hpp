@@ -53,15 +53,19 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
             const int flags_w = flags_w_i( i, j );
             // Nodal water volume fraction n S.
             const double nS = m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
-            const double drag = physics::nodalDrag(
-                nS, water_viscosity, vol_i( i, j ), q_i( i, j ) );
+            // Zero permeability (k_rel = 0) locks the water to the solid.
+            const bool locked = !( q_i( i, j ) > 0.0 );
+            const double drag =
+                locked ? 0.0
+                       : physics::nodalDrag( nS, water_viscosity, vol_i( i, j ),
+                                             q_i( i, j ) );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r = update( m_s_i( i, j ), m_w_i( i, j ),
-                                       mv_s_i( i, j, d ), mv_w_i( i, j, d ),
-                                       f_m_i( i, j, d ), nS * f_w_i( i, j, d ),
-                                       drag, flags & bit, flags_w & bit );
+                const auto r = update(
+                    m_s_i( i, j ), m_w_i( i, j ), mv_s_i( i, j, d ),
+                    mv_w_i( i, j, d ), f_m_i( i, j, d ), nS * f_w_i( i, j, d ),
+                    drag, flags & bit, locked || ( flags_w & bit ) );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;

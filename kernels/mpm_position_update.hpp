@@ -13,7 +13,8 @@ namespace mpm
   \brief Moves the points by their displacement increment, x_p += du_p.
   Returns the smallest index of a point now outside the grid, or -1.
   With `remove_outside`, such points are marked removed instead and
-  `num_removed` counts them.
+  `num_removed` counts them. A non-finite position is not "outside": it is
+  left for checkStability to report as an instability.
 */
 template <class ExecSpace>
 int updatePositions( const ExecSpace& exec_space,
@@ -37,7 +38,8 @@ int updatePositions( const ExecSpace& exec_space,
             x_p( p, 0 ) += du_p( p, 0 );
             x_p( p, 1 ) += du_p( p, 1 );
             int ci, cj;
-            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) &&
+                 Kokkos::Experimental::isfinite( x_p( p, 0 ) + x_p( p, 1 ) ) )
             {
                 if ( remove_outside )
                 {

@@ -62,9 +62,10 @@ struct TwoPhaseNodalUpdate
             r.v_s = 0.0;
             r.v_w = ( water_tied || !has_water ) ? 0.0 : b_w / ( a_w + q );
         }
-        else if ( water_tied || !has_water )
+        else if ( water_tied || !has_water || !( q < 1.0e300 ) )
         {
-            // v_w' = v_s': the sum of both equations (the mixture).
+            // v_w' = v_s': the sum of both equations (the mixture); also
+            // the limit of an infinite drag (k_rel = 0 at every point).
             r.v_s = ( b_w + b_s ) / ( a_w + a_s );
             r.v_w = r.v_s;
         }
