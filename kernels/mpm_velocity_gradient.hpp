@@ -123,15 +123,23 @@ void cellAverageVolumetricRate( const ExecSpace& exec_space,
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Two-phase: the solid velocity gradient (as velocityGradient) and
-  the divergence of the water velocity at the points.
+  \brief Two-phase: the solid velocity gradient (as velocityGradient) and,
+  for the water balance (Eq. 8), the equivalent water divergence
+  div v_w = div( nS (v_w - v_s) ) / (nS)_p + div v_s, with the relative
+  flux nS (v_w - v_s) interpolated from the nodes (nodal nS =
+  m_w / (rho_w vol)). Then nS div v_w + (1 - n) S div v_s = div q +
+  S div v_s is conservative: the flux leaving one point enters its
+  neighbours, also across a wetting front where nS jumps (the point-wise
+  nS_p div v_w dropped (v_w - v_s) . grad(nS) and lost about half of the
+  infiltrating water there).
 */
 template <class ExecSpace>
 void velocityGradientTwoPhase( const ExecSpace& exec_space,
                                const ParticleViews<ExecSpace>& pv,
                                const WaterParticleViews<ExecSpace>& wv,
                                const GridViews<ExecSpace>& gv,
-                               const WaterGridViews<ExecSpace>& wg )
+                               const WaterGridViews<ExecSpace>& wg,
+                               const double water_density )
 {
     const auto grid = gv.geometry;
     const auto v_s_i = gv.v_i;
@@ -140,6 +148,10 @@ void velocityGradientTwoPhase( const ExecSpace& exec_space,
     const auto grad_v_p = pv.grad_v_p;
     const auto div_v_w_p = wv.div_v_w_p;
     const auto status_p = pv.status_p;
+    const auto m_w_i = wg.m_w_i;
+    const auto vol_i = wg.vol_i;
+    const auto n_p = wv.n_p;
+    const auto S_p = wv.S_p;
 
     Kokkos::parallel_for(
         "mpm::velocity_gradient_two_phase",
@@ -155,8 +167,23 @@ void velocityGradientTwoPhase( const ExecSpace& exec_space,
             for ( int a = 0; a < 2; ++a )
                 for ( int b = 0; b < 2; ++b )
                     grad_v_p( p, a, b ) = L[a][b];
-            gradientAt( ci, cj, dwdx, dwdy, v_w_i, L );
-            div_v_w_p( p ) = L[0][0] + L[1][1];
+            // Divergence of the relative water flux nS (v_w - v_s).
+            double div_q = 0.0;
+            for ( int k = 0; k < 4; ++k )
+            {
+                const int i = ci + ( k & 1 );
+                const int j = cj + ( k >> 1 );
+                if ( !( m_w_i( i, j ) > 0.0 ) )
+                    continue;
+                const double nS_i =
+                    m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
+                div_q += nS_i *
+                         ( ( v_w_i( i, j, 0 ) - v_s_i( i, j, 0 ) ) * dwdx[k] +
+                           ( v_w_i( i, j, 1 ) - v_s_i( i, j, 1 ) ) * dwdy[k] );
+            }
+            const double nS_p = n_p( p ) * S_p( p );
+            div_v_w_p( p ) =
+                ( nS_p > 0.0 ? div_q / nS_p : 0.0 ) + L[0][0] + L[1][1];
         } );
 }
 

@@ -214,7 +214,7 @@ class Simulation
                              water.density );
         remapVelocityTwoPhase( exec, grid, water_grid );
         velocityGradientTwoPhase( exec, particles, water_particles, grid,
-                                  water_grid );
+                                  water_grid, water.density );
         if ( solver.bbar )
         {
             cellAverageVolumetricRate( exec, particles, grid );

@@ -600,9 +600,9 @@ TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
     std::printf( "ahead of the front: p_w down to %.1f Pa; relative water "
                  "flux of the points up to %.3g m/s (Darcy bound %.3g m/s)\n",
                  p_dry, q_dry, q_darcy );
-    // Measured: up to 3.4 kPa more suction just ahead of the front (water
-    // drawn towards it through the averaged nodal permeability; open point).
-    EXPECT_GT( p_dry, -suction - 5000.0 )
+    // The soil ahead of the front keeps its suction (measured -50.3 kPa;
+    // a non-conservative water balance dried it to -53.4 kPa).
+    EXPECT_GT( p_dry, -suction - 1000.0 )
         << "the soil ahead of the front dried";
     double deepest = 0.0;
     for ( const auto& [t, z] : front )
@@ -620,12 +620,10 @@ TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
         std::printf( "wetting front at %.1f s: %.3f m, Green-Ampt %.2f m "
                      "(ratio %.2f)\n",
                      t, it->second, z_ref, it->second / z_ref );
-        // Measured (0.25 m cells): 0.96, 0.72 and 0.61 of Green-Ampt at 1.5,
-        // 3.7 and 8.5 s; the front advances in cell-sized jumps and lags
-        // the sharp-front estimate (open point, refine in the slope study).
-        // A drag that blocks infiltration (the resistance sum at nodes,
-        // fixed) left it at ~0.1.
-        EXPECT_GT( it->second, z_ref / 2.0 )
+        // Measured (0.25 m cells): 1.04, 0.99 and 0.98 of Green-Ampt at
+        // 1.5, 3.7 and 8.5 s. A drag summing resistances left the front
+        // stuck (~0.1), a non-conservative water balance at 0.61.
+        EXPECT_GT( it->second, z_ref / 1.5 )
             << "front at " << t << " s against Green-Ampt " << z_ref << " m";
         EXPECT_LT( it->second, z_ref * 1.5 )
             << "front at " << t << " s against Green-Ampt " << z_ref << " m";
