@@ -82,29 +82,36 @@ void BM_stepUnsaturated( benchmark::State& state )
     BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Unsaturated );
 }
 
-#define SCENE_BENCHMARKS( SPACE )                                              \
-    BENCHMARK_TEMPLATE( BM_stepDry, SPACE )                                    \
-        ->ArgName( "cells_high" )                                              \
-        ->Arg( 21 )                                                            \
-        ->Arg( 65 )                                                            \
-        ->Unit( benchmark::kMicrosecond )                                      \
-        ->UseRealTime();                                                       \
-    BENCHMARK_TEMPLATE( BM_stepSaturated, SPACE )                              \
-        ->ArgName( "cells_high" )                                              \
-        ->Arg( 21 )                                                            \
-        ->Arg( 65 )                                                            \
-        ->Unit( benchmark::kMicrosecond )                                      \
-        ->UseRealTime();                                                       \
-    BENCHMARK_TEMPLATE( BM_stepUnsaturated, SPACE )                            \
-        ->ArgName( "cells_high" )                                              \
-        ->Arg( 21 )                                                            \
-        ->Arg( 65 )                                                            \
-        ->Unit( benchmark::kMicrosecond )                                      \
-        ->UseRealTime()
+// Names as in bench_kernels.cpp: <scene step>/<backend>/<scatter>/cells_high:n
+// (the simulation scatters with duplication on OpenMP).
+void sceneSizes( benchmark::internal::Benchmark* b )
+{
+    b->ArgName( "cells_high" )
+        ->Arg( 21 )
+        ->Arg( 65 )
+        ->Unit( benchmark::kMicrosecond )
+        ->UseRealTime();
+}
 
-SCENE_BENCHMARKS( Kokkos::Serial );
+BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::Serial )
+    ->Name( "step_dry/Serial/plain" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::Serial )
+    ->Name( "step_saturated/Serial/plain" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::Serial )
+    ->Name( "step_unsaturated/Serial/plain" )
+    ->Apply( sceneSizes );
 #ifdef KOKKOS_ENABLE_OPENMP
-SCENE_BENCHMARKS( Kokkos::OpenMP );
+BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::OpenMP )
+    ->Name( "step_dry/OpenMP/duplicated" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::OpenMP )
+    ->Name( "step_saturated/OpenMP/duplicated" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::OpenMP )
+    ->Name( "step_unsaturated/OpenMP/duplicated" )
+    ->Apply( sceneSizes );
 #endif
 
 } // namespace

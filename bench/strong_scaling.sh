@@ -13,12 +13,12 @@
 #   machine): each tagged call keeps the raw files of the other tags and the
 #   table covers all of them. Without a tag, old raw files are removed first.
 #   BENCH_THREADS: OpenMP thread counts to run (default "1 2"; Serial runs
-#   with 1), e.g. the 1-thread part while another process holds the other
-#   core and the 2-thread part when the machine is idle (same BENCH_RUN_TAG).
-# Repetitions are randomly interleaved across benchmarks, so a burst of load
-# from other processes spreads over many benchmarks instead of spoiling the
-# medians of one; still, run on an otherwise idle machine.
-# Writes bench/results/raw_nt{1,2}[_<tag>].json (Google Benchmark output) and
+#   with 1).
+# Each repetition is one process per thread count (benchmarks in random order
+# within it); the table gives the median over the repetitions. Run on an
+# otherwise idle machine: a second busy process on 2 cores ruins the 2-thread
+# numbers.
+# Writes bench/results/raw_nt<N>[_<tag>]_r<rep>.json (Google Benchmark output),
 # bench/results/strong_scaling.json, and prints a Markdown table on stdout
 # (benchmark progress goes to stderr).
 set -euo pipefail
@@ -41,7 +41,13 @@ results="$bench_dir/results"
 mkdir -p "$results"
 tag=${BENCH_RUN_TAG:-}
 suffix=${tag:+_$tag}
-[ -n "$tag" ] || rm -f "$results"/raw_nt*.json
+if [ -n "$tag" ]; then
+    for nt in ${BENCH_THREADS:-1 2}; do
+        rm -f "$results"/raw_nt"$nt"_"$tag"_r*.json
+    done
+else
+    rm -f "$results"/raw_nt*.json
+fi
 
 # Timing settings: one thread per core, threads spread over the cores.
 export OMP_PROC_BIND=spread OMP_PLACES=threads
@@ -53,26 +59,29 @@ list_benchmarks() {
         --benchmark_filter="$filter" | grep -E '^[a-z0-9_]+/(Serial|OpenMP)/' || true
 }
 
-for nt in ${BENCH_THREADS:-1 2}; do
-    # Serial once (1 thread), OpenMP at every thread count.
-    backends='/(Serial|OpenMP)/'
-    [ "$nt" -gt 1 ] && backends='/OpenMP/'
-    names=$(list_benchmarks "$nt" | grep -E "$backends" | paste -sd '|' - || true)
-    if [ -z "$names" ]; then
-        echo "note: no benchmark matches '$filter' at $nt thread(s)" >&2
-        continue
-    fi
-    # Exact-name alternation.
-    run_filter="^($names)\$"
-    out="$results/raw_nt$nt$suffix.json"
-    echo "== $nt thread(s): $binary --kokkos-threads=$nt (filter '$filter')" >&2
-    "$binary" --kokkos-threads="$nt" \
-        --benchmark_filter="$run_filter" \
-        --benchmark_repetitions="$repetitions" \
-        --benchmark_report_aggregates_only=true \
-        --benchmark_enable_random_interleaving=true \
-        --benchmark_min_time="$min_time" \
-        --benchmark_out="$out" --benchmark_out_format=json >&2
+# Repetitions are separate processes alternating between the thread counts
+# (1, 2, 1, 2, ...), so a drift of the (virtual) machine's speed hits both
+# columns alike; the report takes the median over the processes.
+for rep in $(seq 1 "$repetitions"); do
+    for nt in ${BENCH_THREADS:-1 2}; do
+        # Serial once (with 1 thread), OpenMP at every thread count.
+        backends='/(Serial|OpenMP)/'
+        [ "$nt" -gt 1 ] && backends='/OpenMP/'
+        names=$(list_benchmarks "$nt" | grep -E "$backends" | paste -sd '|' - || true)
+        if [ -z "$names" ]; then
+            echo "note: no benchmark matches '$filter' at $nt thread(s)" >&2
+            continue
+        fi
+        # Exact-name alternation.
+        run_filter="^($names)\$"
+        out="$results/raw_nt$nt${suffix}_r$rep.json"
+        echo "== repetition $rep/$repetitions, $nt thread(s) (filter '$filter')" >&2
+        "$binary" --kokkos-threads="$nt" \
+            --benchmark_filter="$run_filter" \
+            --benchmark_enable_random_interleaving=true \
+            --benchmark_min_time="$min_time" \
+            --benchmark_out="$out" --benchmark_out_format=json >&2
+    done
 done
 
 shopt -s nullglob

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Strong-scaling table of the rainslide benchmarks (standard library only).
 
-Reads Google Benchmark JSON files written by bench/strong_scaling.sh (one per
-OpenMP thread count), takes the median over the repetitions, writes a JSON
-summary and prints a Markdown table of material-point updates per second.
+Reads the Google Benchmark JSON files written by bench/strong_scaling.sh (one
+per process: repetition x OpenMP thread count), takes the median of each
+benchmark over the repetitions, writes a JSON summary and prints a Markdown
+table of material-point updates per second.
 
 Benchmark names are <kernel>/<backend>/<scatter>/cells_high:<n>/real_time with
 scatter = plain | duplicated | atomic | none.
@@ -11,9 +12,11 @@ scatter = plain | duplicated | atomic | none.
 
 import argparse
 import json
+import statistics
 import sys
 
-KERNELS = ["p2g", "p2g_overhead", "grid_update", "g2p", "remap", "stress_update", "step"]
+KERNELS = ["p2g", "p2g_overhead", "grid_update", "g2p", "remap", "stress_update", "step",
+           "step_dry", "step_saturated", "step_unsaturated"]
 KERNEL_LABELS = {
     "p2g": "P2G (mass, momentum, force)",
     "p2g_overhead": "P2G fixed cost only (grid reset + ScatterView create/contribute, no point loop)",
@@ -22,6 +25,9 @@ KERNEL_LABELS = {
     "remap": "MUSL remap (p2gMomentum + remapVelocity)",
     "stress_update": "stress update (vel. gradient + Mohr-Coulomb)",
     "step": "whole step (Simulation::advance)",
+    "step_dry": "whole step, dry scene (soil block)",
+    "step_saturated": "whole step, saturated two-phase scene",
+    "step_unsaturated": "whole step, unsaturated two-phase scene (van Genuchten)",
 }
 
 
@@ -34,13 +40,16 @@ def parse_name(name):
 
 
 def load_runs(path):
-    """Median (or single-run) entries of one Google Benchmark JSON file."""
+    """Context and {(kernel, backend, scatter, n): run} of one JSON file.
+
+    A file holds one process's runs (one repetition) or, if run with
+    Google Benchmark repetitions, their median aggregates.
+    """
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     runs = {}
-    cvs = {}
     for b in data.get("benchmarks", []):
-        if "error_occurred" in b and b["error_occurred"]:
+        if b.get("error_occurred"):
             continue
         key = parse_name(b.get("run_name", b["name"]))
         if key is None:
@@ -48,11 +57,19 @@ def load_runs(path):
         if b.get("run_type") == "aggregate":
             if b.get("aggregate_name") == "median":
                 runs[key] = b
-            elif b.get("aggregate_name") == "cv":
-                cvs[key] = b.get("real_time")
         elif key not in runs:
             runs[key] = b
-    return data.get("context", {}), runs, cvs
+    return data.get("context", {}), runs
+
+
+def median(values):
+    return statistics.median(values) if values else None
+
+
+def cv(values):
+    if len(values) < 2:
+        return None
+    return statistics.stdev(values) / statistics.mean(values)
 
 
 def fmt_rate(value):
@@ -74,27 +91,36 @@ def main():
     parser.add_argument("--filter", default=".")
     args = parser.parse_args()
 
-    # results[(kernel, n)][(backend, scatter, threads)] = entry
-    results = {}
+    # samples[(kernel, n)][(backend, scatter, threads)] = [run, ...], one run
+    # per process (repetition).
+    samples = {}
     points = {}
     contexts = {}
     for path in args.inputs:
-        context, runs, cvs = load_runs(path)
+        context, runs = load_runs(path)
         threads = int(context.get("openmp_threads", "0"))
-        contexts[str(threads)] = context
+        contexts.setdefault(str(threads), context)
         for (kernel, backend, scatter, n), b in runs.items():
             t = 1 if backend == "Serial" else threads
-            entry = {
-                "mp_updates_per_s": b.get("items_per_second"),
-                "real_time": b.get("real_time"),
-                "time_unit": b.get("time_unit"),
-                "cv_real_time": cvs.get((kernel, backend, scatter, n)),
-                "yielded_fraction": b.get("yielded"),
-            }
-            slot = results.setdefault((kernel, n), {})
-            # Serial is run once; keep the first (1-thread run) if repeated.
-            slot.setdefault((backend, scatter, t), entry)
+            slot = samples.setdefault((kernel, n), {})
+            slot.setdefault((backend, scatter, t), []).append(b)
             points[(kernel, n)] = int(b.get("points", 0))
+
+    # Median over the repetitions.
+    results = {}
+    for key, slot in samples.items():
+        results[key] = {}
+        for variant, runs in slot.items():
+            rates = [r["items_per_second"] for r in runs]
+            times = [r["real_time"] for r in runs]
+            results[key][variant] = {
+                "mp_updates_per_s": median(rates),
+                "real_time": median(times),
+                "time_unit": runs[0].get("time_unit"),
+                "cv_rate": cv(rates),
+                "repetitions": len(runs),
+                "yielded_fraction": runs[0].get("yielded"),
+            }
 
     def rate(slot, backend, scatters, threads):
         for s in scatters:
@@ -156,20 +182,33 @@ def main():
             "repetitions": args.repetitions,
             "min_time_s": args.min_time,
             "filter": args.filter,
-            "inputs": [path.rsplit("/", 1)[-1] for path in args.inputs],
+            "inputs": sorted(path.rsplit("/", 1)[-1] for path in args.inputs),
             "OMP_PROC_BIND": "spread",
             "OMP_PLACES": "threads",
         },
         "context": contexts,
         "results": summary,
     }
+    reps = sorted(
+        {v["repetitions"] for slot in results.values() for v in slot.values()}
+    )
+    cvs = [
+        v["cv_rate"]
+        for slot in results.values()
+        for v in slot.values()
+        if v["cv_rate"] is not None
+    ]
+    out["settings"]["repetitions_found"] = reps
     with open(args.output, "w", encoding="utf-8") as f:
         json.dump(out, f, indent=2)
         f.write("\n")
 
     print(
         "Material-point updates per second, millions (median of "
-        f"{args.repetitions} repetitions). OpenMP default = ScatterDuplicated "
+        f"{'/'.join(map(str, reps))} repetitions, each a separate process; "
+        f"largest coefficient of variation {max(cvs) * 100 if cvs else 0:.0f}%, "
+        f"median {statistics.median(cvs) * 100 if cvs else 0:.0f}%). "
+        "OpenMP default = ScatterDuplicated "
         "for scatter kernels (no scatter in grid update, G2P, stress update); "
         "atomic = ScatterNonDuplicated.\n"
     )
