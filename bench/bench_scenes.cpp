@@ -1,11 +1,18 @@
 // Cost of one whole step per kind of scene ("model only what a scene
 // needs"): dry (single phase), saturated and unsaturated two-phase, on the
 // same block of soil. Arg: cells across the block's height (2 x 2 points
-// per cell, 8 n^2 points).
+// per cell, 8 n^2 points). step_*: Simulation::advance; run_step_*: a step
+// of runStages (advance and its per-step CFL limit, stability check and
+// kinetic energy). run_slope_*: run_step_* on the paper's slope, 4.7k points
+// on a mostly empty grid, from rest: cases/slope_total_stress.toml (dry) and
+// the rainfall stage of cases/slope_base.toml (unsaturated).
 
 #include <bench_problem.hpp>
 
+#include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
+
+#include <string>
 
 #include <Kokkos_Core.hpp>
 
@@ -42,21 +49,61 @@ mpm::CaseConfig sceneCase( const int n, const mpm::AnalysisType analysis )
     return config;
 }
 
-template <class ExecSpace>
-void BM_sceneStep( benchmark::State& state, const mpm::AnalysisType analysis )
+//! A case of cases/ (empty name if the file cannot be read).
+mpm::CaseConfig projectCase( const std::string& file )
 {
-    const auto config =
-        sceneCase( static_cast<int>( state.range( 0 ) ), analysis );
+    const std::string source = __FILE__;
+    const std::string cases =
+        source.substr( 0, source.rfind( '/' ) ) + "/../cases/";
+    try
+    {
+        return mpm::readCaseFile( cases + file );
+    }
+    catch ( const std::exception& )
+    {
+        return mpm::CaseConfig();
+    }
+}
+
+//! Times one step of `config` per iteration (after 5 untimed ones),
+//! with runStages' per-step calls if `run_step`.
+template <class ExecSpace>
+void BM_caseSteps( benchmark::State& state, const mpm::CaseConfig& config,
+                   const bool run_step )
+{
+    if ( config.stages.empty() )
+    {
+        state.SkipWithError( "the case file could not be read" );
+        return;
+    }
     mpm::Simulation<ExecSpace> sim( config );
-    const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
-    // A few steps so the timed state has stresses and flow.
+    // The last stage (the slope's rainfall), from the initial state.
+    const mpm::StageConfig& stage = config.stages.back();
+    sim.applyStage( stage );
+    const mpm::StepSettings settings{
+        stage.gravity_m_per_s2[0], stage.gravity_m_per_s2[1], stage.damping };
     const double dt = 0.5 * sim.waveSpeedLimit().dt_limit;
-    for ( int k = 0; k < 5; ++k )
+    double kinetic_energy = 0.0;
+    const auto step = [&]()
+    {
+        if ( !run_step )
+        {
+            sim.advance( dt, settings );
+            return;
+        }
+        const mpm::WaveSpeedLimit limit = sim.waveSpeedLimit();
         sim.advance( dt, settings );
+        sim.checkStability( dt, limit );
+        kinetic_energy = sim.kineticEnergy();
+        benchmark::DoNotOptimize( sim.numActivePoints() );
+    };
+    // A few steps so the timed state has stresses and flow.
+    for ( int k = 0; k < 5; ++k )
+        step();
     ExecSpace().fence();
     for ( auto _ : state )
     {
-        sim.advance( dt, settings );
+        step();
         ExecSpace().fence();
     }
     const int num_points = sim.particles.size();
@@ -64,6 +111,15 @@ void BM_sceneStep( benchmark::State& state, const mpm::AnalysisType analysis )
     state.counters["points"] = num_points;
     state.counters["threads"] = ExecSpace::concurrency();
     state.counters["dt_s"] = dt;
+    state.counters["kinetic_energy_j"] = kinetic_energy;
+}
+
+template <class ExecSpace>
+void BM_sceneStep( benchmark::State& state, const mpm::AnalysisType analysis )
+{
+    BM_caseSteps<ExecSpace>(
+        state, sceneCase( static_cast<int>( state.range( 0 ) ), analysis ),
+        false );
 }
 
 template <class ExecSpace>
@@ -82,6 +138,35 @@ void BM_stepUnsaturated( benchmark::State& state )
     BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Unsaturated );
 }
 
+template <class ExecSpace>
+void BM_runStepDry( benchmark::State& state )
+{
+    BM_caseSteps<ExecSpace>( state,
+                             sceneCase( static_cast<int>( state.range( 0 ) ),
+                                        mpm::AnalysisType::Dry ),
+                             true );
+}
+template <class ExecSpace>
+void BM_runStepUnsaturated( benchmark::State& state )
+{
+    BM_caseSteps<ExecSpace>( state,
+                             sceneCase( static_cast<int>( state.range( 0 ) ),
+                                        mpm::AnalysisType::Unsaturated ),
+                             true );
+}
+
+template <class ExecSpace>
+void BM_runSlopeDry( benchmark::State& state )
+{
+    BM_caseSteps<ExecSpace>( state, projectCase( "slope_total_stress.toml" ),
+                             true );
+}
+template <class ExecSpace>
+void BM_runSlopeUnsaturated( benchmark::State& state )
+{
+    BM_caseSteps<ExecSpace>( state, projectCase( "slope_base.toml" ), true );
+}
+
 // Names as in bench_kernels.cpp: <scene step>/<backend>/<scatter>/cells_high:n
 // (the simulation scatters with duplication on OpenMP).
 void sceneSizes( benchmark::internal::Benchmark* b )
@@ -93,6 +178,11 @@ void sceneSizes( benchmark::internal::Benchmark* b )
         ->UseRealTime();
 }
 
+void slopeReport( benchmark::internal::Benchmark* b )
+{
+    b->Unit( benchmark::kMicrosecond )->UseRealTime();
+}
+
 BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::Serial )
     ->Name( "step_dry/Serial/plain" )
     ->Apply( sceneSizes );
@@ -102,6 +192,18 @@ BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::Serial )
 BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::Serial )
     ->Name( "step_unsaturated/Serial/plain" )
     ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runStepDry, Kokkos::Serial )
+    ->Name( "run_step_dry/Serial/plain" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runStepUnsaturated, Kokkos::Serial )
+    ->Name( "run_step_unsaturated/Serial/plain" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runSlopeDry, Kokkos::Serial )
+    ->Name( "run_slope_dry/Serial/plain" )
+    ->Apply( slopeReport );
+BENCHMARK_TEMPLATE( BM_runSlopeUnsaturated, Kokkos::Serial )
+    ->Name( "run_slope_unsaturated/Serial/plain" )
+    ->Apply( slopeReport );
 #ifdef KOKKOS_ENABLE_OPENMP
 BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::OpenMP )
     ->Name( "step_dry/OpenMP/duplicated" )
@@ -112,6 +214,18 @@ BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::OpenMP )
 BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::OpenMP )
     ->Name( "step_unsaturated/OpenMP/duplicated" )
     ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runStepDry, Kokkos::OpenMP )
+    ->Name( "run_step_dry/OpenMP/duplicated" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runStepUnsaturated, Kokkos::OpenMP )
+    ->Name( "run_step_unsaturated/OpenMP/duplicated" )
+    ->Apply( sceneSizes );
+BENCHMARK_TEMPLATE( BM_runSlopeDry, Kokkos::OpenMP )
+    ->Name( "run_slope_dry/OpenMP/duplicated" )
+    ->Apply( slopeReport );
+BENCHMARK_TEMPLATE( BM_runSlopeUnsaturated, Kokkos::OpenMP )
+    ->Name( "run_slope_unsaturated/OpenMP/duplicated" )
+    ->Apply( slopeReport );
 #endif
 
 } // namespace

@@ -10,6 +10,65 @@
 namespace mpm
 {
 //---------------------------------------------------------------------------//
+/*!
+  \brief What the last point loop of a step reports about the new state,
+  so the time loop needs no reduction of its own: the CFL limit
+  (criticalTimeStep / criticalTimeStepTwoPhase), the kinetic energy
+  (kineticEnergy) and what findUnstablePoint needs to clear the state.
+*/
+struct StepDiagnostics
+{
+    double dt_limit;       //!< min over points of h / (c_p + |v_p|), s
+    double max_wave_speed; //!< max over points of c_p, m/s
+    double kinetic_energy; //!< sum 0.5 m_p |v_p|^2, J
+    double max_speed2;     //!< max |v_p|^2 of the sound points, m^2/s^2
+    int first_unsound;     //!< smallest index failing PointSoundness, or
+                           //!< the number of points if none
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Whether point p's position, stress, volume (two-phase: pore
+  pressure, water velocity) and speed^2 are finite and its volume is
+  positive.
+*/
+template <class ExecSpace>
+struct PointSoundness
+{
+    typename ParticleViews<ExecSpace>::vector_view x_p;
+    typename ParticleViews<ExecSpace>::tensor_view sigma_p;
+    typename ParticleViews<ExecSpace>::scalar_view vol_p;
+    bool two_phase;
+    typename WaterParticleViews<ExecSpace>::scalar_view p_w_p;
+    typename WaterParticleViews<ExecSpace>::vector_view v_w_p;
+
+    PointSoundness( const ParticleViews<ExecSpace>& pv,
+                    const WaterParticleViews<ExecSpace>& wv )
+        : x_p( pv.x_p )
+        , sigma_p( pv.sigma_p )
+        , vol_p( pv.vol_p )
+        , two_phase( wv.allocated() )
+        , p_w_p( wv.p_w_p )
+        , v_w_p( wv.v_w_p )
+    {
+    }
+
+    //! Point p with speed^2 `speed2`.
+    KOKKOS_INLINE_FUNCTION bool operator()( const int p,
+                                            const double speed2 ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        // Any NaN or infinity makes the sum non-finite.
+        const double sum =
+            x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) + sigma_p( p, 1 ) +
+            sigma_p( p, 2 ) + sigma_p( p, 3 ) + vol_p( p ) +
+            ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) + v_w_p( p, 1 ) : 0.0 );
+        return KE::isfinite( sum ) && KE::isfinite( speed2 ) &&
+               vol_p( p ) > 0.0;
+    }
+};
+
+//---------------------------------------------------------------------------//
 //! Total kinetic energy sum 0.5 m_p |v_p|^2, J (per metre out of plane).
 template <class ExecSpace>
 double kineticEnergy( const ExecSpace& exec_space,
@@ -44,15 +103,9 @@ int findUnstablePoint( const ExecSpace& exec_space,
                        const WaterParticleViews<ExecSpace>& wv,
                        const double speed_limit )
 {
-    namespace KE = Kokkos::Experimental;
-    const auto x_p = pv.x_p;
+    const PointSoundness<ExecSpace> sound( pv, wv );
     const auto v_p = pv.v_p;
-    const auto sigma_p = pv.sigma_p;
-    const auto vol_p = pv.vol_p;
     const auto status_p = pv.status_p;
-    const bool two_phase = wv.allocated();
-    const auto p_w_p = wv.p_w_p;
-    const auto v_w_p = wv.v_w_p;
     const int none = pv.size();
     int first = none;
     Kokkos::parallel_reduce(
@@ -61,17 +114,10 @@ int findUnstablePoint( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int p, int& first_bad ) {
             if ( status_p( p ) != point_active )
                 return;
-            // Any NaN or infinity makes the sum non-finite.
-            const double sum =
-                x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) + sigma_p( p, 1 ) +
-                sigma_p( p, 2 ) + sigma_p( p, 3 ) + vol_p( p ) +
-                ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) + v_w_p( p, 1 )
-                            : 0.0 );
             const double speed2 =
                 v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
-            const bool bad = !KE::isfinite( sum ) || !KE::isfinite( speed2 ) ||
-                             speed2 > speed_limit * speed_limit ||
-                             !( vol_p( p ) > 0.0 );
+            const bool bad =
+                !sound( p, speed2 ) || speed2 > speed_limit * speed_limit;
             if ( bad && p < first_bad )
                 first_bad = p;
         },

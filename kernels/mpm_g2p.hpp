@@ -1,7 +1,9 @@
 #ifndef MPM_G2P_HPP
 #define MPM_G2P_HPP
 
+#include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_p2g.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
 
@@ -38,6 +40,26 @@ KOKKOS_INLINE_FUNCTION double flipPicBlend( const double flip_fraction,
     return flip_fraction * ( v + dv ) + ( 1.0 - flip_fraction ) * v_pic;
 }
 
+//! FLIP/PIC update of point p's velocity v_p from the nodal v_i, dv_i of
+//! its cell; du_p (if given) gets the displacement increment dt sum N v_i.
+template <class PointVectorView, class VectorView>
+KOKKOS_INLINE_FUNCTION void
+g2pPoint( const int p, const int ci, const int cj, const double w[4],
+          const VectorView& v_i, const VectorView& dv_i,
+          const double flip_fraction, const PointVectorView& v_p,
+          const double dt, const PointVectorView& du_p )
+{
+    double v_pic[2], dv[2];
+    interpolateVelocity( ci, cj, w, v_i, dv_i, v_pic, dv );
+    for ( int d = 0; d < 2; ++d )
+    {
+        v_p( p, d ) =
+            flipPicBlend( flip_fraction, v_p( p, d ), dv[d], v_pic[d] );
+        if ( du_p.data() )
+            du_p( p, d ) = dt * v_pic[d];
+    }
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Grid-to-particle velocity update with a FLIP/PIC blend,
@@ -69,43 +91,35 @@ void g2pVelocity( const ExecSpace& exec_space,
             int ci, cj;
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            double v_pic[2], dv[2];
-            interpolateVelocity( ci, cj, w, v_i, dv_i, v_pic, dv );
-            for ( int d = 0; d < 2; ++d )
-            {
-                v_p( p, d ) =
-                    flipPicBlend( flip_fraction, v_p( p, d ), dv[d], v_pic[d] );
-                du_p( p, d ) = dt * v_pic[d];
-            }
+            g2pPoint( p, ci, cj, w, v_i, dv_i, flip_fraction, v_p, dt, du_p );
         } );
 }
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Two-phase grid-to-particle update: g2pVelocity for the solid (which
-  also sets du_p) and the same FLIP/PIC blend for the water velocity.
+  \brief The time loop's G2P and MUSL remap scatter in one point loop:
+  g2pVelocity, then the updated momentum m_p v_p into `sums` (the points
+  have not moved, so they touch the nodes of the step's P2G).
 */
-template <class ExecSpace>
-void g2pVelocityTwoPhase( const ExecSpace& exec_space,
-                          const ParticleViews<ExecSpace>& pv,
-                          const WaterParticleViews<ExecSpace>& wv,
-                          const GridViews<ExecSpace>& gv,
-                          const WaterGridViews<ExecSpace>& wg, const double dt,
-                          const double flip_fraction )
+template <class ExecSpace, class Duplication>
+void g2pVelocityRemap( const ExecSpace& exec_space,
+                       const ParticleViews<ExecSpace>& pv,
+                       const GridViews<ExecSpace>& gv, const double dt,
+                       const double flip_fraction,
+                       const GridScatter<ExecSpace, 2, Duplication>& sums )
 {
     const auto grid = gv.geometry;
-    const auto v_s_i = gv.v_i;
-    const auto dv_s_i = gv.dv_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto dv_w_i = wg.dv_w_i;
+    const int ny1 = grid.ny + 1;
+    const auto v_i = gv.v_i;
+    const auto dv_i = gv.dv_i;
     const auto x_p = pv.x_p;
-    const auto v_s_p = pv.v_p;
+    const auto v_p = pv.v_p;
     const auto du_p = pv.du_p;
-    const auto v_w_p = wv.v_w_p;
+    const auto m_p = pv.m_p;
     const auto status_p = pv.status_p;
 
     Kokkos::parallel_for(
-        "mpm::g2p_velocity_two_phase",
+        "mpm::g2p_velocity_remap",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p ) {
             if ( status_p( p ) != point_active )
@@ -113,18 +127,64 @@ void g2pVelocityTwoPhase( const ExecSpace& exec_space,
             int ci, cj;
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            double v_pic[2], dv[2];
-            interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_pic, dv );
-            for ( int d = 0; d < 2; ++d )
-            {
-                v_s_p( p, d ) = flipPicBlend( flip_fraction, v_s_p( p, d ),
-                                              dv[d], v_pic[d] );
-                du_p( p, d ) = dt * v_pic[d];
-            }
-            interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_pic, dv );
-            for ( int d = 0; d < 2; ++d )
-                v_w_p( p, d ) = flipPicBlend( flip_fraction, v_w_p( p, d ),
-                                              dv[d], v_pic[d] );
+            g2pPoint( p, ci, cj, w, v_i, dv_i, flip_fraction, v_p, dt, du_p );
+            scatterPointMomentum( sums.access(), ci, cj, ny1, w, m_p( p ),
+                                  v_p( p, 0 ), v_p( p, 1 ) );
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Two-phase grid-to-particle update and MUSL remap scatter in one
+  point loop: the FLIP/PIC blend of g2pVelocity for the solid (which also
+  sets du_p) and for the water velocity, then both phases' updated momenta
+  into `sums` (mv_s x, y; mv_w x, y), with the water mass
+  m_w = n S rho_w V of the point.
+*/
+template <class ExecSpace, class Duplication>
+void g2pVelocityRemapTwoPhase(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
+    const WaterGridViews<ExecSpace>& wg, const double dt,
+    const double flip_fraction, const double water_density,
+    const GridScatter<ExecSpace, 4, Duplication>& sums )
+{
+    const auto grid = gv.geometry;
+    const int ny1 = grid.ny + 1;
+    const auto v_s_i = gv.v_i;
+    const auto dv_s_i = gv.dv_i;
+    const auto v_w_i = wg.v_w_i;
+    const auto dv_w_i = wg.dv_w_i;
+    const auto x_p = pv.x_p;
+    const auto v_s_p = pv.v_p;
+    const auto du_p = pv.du_p;
+    const auto m_s_p = pv.m_p;
+    const auto vol_p = pv.vol_p;
+    const auto status_p = pv.status_p;
+    const auto v_w_p = wv.v_w_p;
+    const auto S_p = wv.S_p;
+    const auto n_p = wv.n_p;
+    const typename ParticleViews<ExecSpace>::vector_view no_du;
+
+    Kokkos::parallel_for(
+        "mpm::g2p_velocity_remap_two_phase",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p ) {
+            if ( status_p( p ) != point_active )
+                return;
+            int ci, cj;
+            double w[4], dwdx[4], dwdy[4];
+            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+            g2pPoint( p, ci, cj, w, v_s_i, dv_s_i, flip_fraction, v_s_p, dt,
+                      du_p );
+            g2pPoint( p, ci, cj, w, v_w_i, dv_w_i, flip_fraction, v_w_p, dt,
+                      no_du );
+            const double m_w = n_p( p ) * S_p( p ) * water_density * vol_p( p );
+            const auto node = sums.access();
+            scatterPointMomentum( node, ci, cj, ny1, w, m_s_p( p ),
+                                  v_s_p( p, 0 ), v_s_p( p, 1 ), 0 );
+            scatterPointMomentum( node, ci, cj, ny1, w, m_w, v_w_p( p, 0 ),
+                                  v_w_p( p, 1 ), 2 );
         } );
 }
 

@@ -1,7 +1,9 @@
 #ifndef MPM_GRID_UPDATE_HPP
 #define MPM_GRID_UPDATE_HPP
 
+#include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_p2g.hpp>
 #include <physics/mpm_nodal_update.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -92,6 +94,84 @@ void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv )
         KOKKOS_LAMBDA( const int a ) {
             const int i = active_i( a ) / ny1;
             const int j = active_i( a ) % ny1;
+            double v_x = p_i( i, j, 0 ) / m_i( i, j );
+            double v_y = p_i( i, j, 1 ) / m_i( i, j );
+            physics::applyVelocityBC( flags_i( i, j ), v_x, v_y );
+            v_i( i, j, 0 ) = v_x;
+            v_i( i, j, 1 ) = v_y;
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The time loop's dry grid update: lists the nodes the P2G scatter
+  touched into gv.active_i, takes their sums into gv.m_i, gv.p_i, gv.f_i
+  and updates v_i and dv_i on those with mass, as gridUpdateDry.
+*/
+template <class ExecSpace, class Duplication>
+void gridUpdateDry(
+    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& sums,
+    const double dt, const double damping, const double inertia_scaling )
+{
+    gv.num_active = sums.listTouched( exec_space, gv.active_i );
+    const physics::DryNodalUpdate update{ dt, damping, inertia_scaling };
+    const auto m_i = gv.m_i;
+    const auto p_i = gv.p_i;
+    const auto f_i = gv.f_i;
+    const auto v_i = gv.v_i;
+    const auto dv_i = gv.dv_i;
+    const auto flags_i = gv.flags_i;
+    const auto active_i = gv.active_i;
+    const int ny1 = gv.geometry.ny + 1;
+
+    Kokkos::parallel_for(
+        "mpm::grid_update_dry",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int n = active_i( a );
+            const int i = n / ny1;
+            const int j = n % ny1;
+            takeMassMomentumForce( sums, n, i, j, m_i, p_i, f_i );
+            // Nodes touched with zero weight only carry no mass.
+            if ( !( m_i( i, j ) > 0.0 ) )
+                return;
+            const int flags = flags_i( i, j );
+            update( m_i( i, j ), p_i( i, j, 0 ), f_i( i, j, 0 ),
+                    flags & node_fix_x, v_i( i, j, 0 ), dv_i( i, j, 0 ) );
+            update( m_i( i, j ), p_i( i, j, 1 ), f_i( i, j, 1 ),
+                    flags & node_fix_y, v_i( i, j, 1 ), dv_i( i, j, 1 ) );
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The time loop's MUSL remap on the nodes of gv.active_i: takes the
+  remapped momentum into gv.p_i and sets v_i = p_i / m_i with the boundary
+  flags where there is mass, as remapVelocity.
+*/
+template <class ExecSpace, class Duplication>
+void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+                    const GridScatter<ExecSpace, 2, Duplication>& sums )
+{
+    const auto m_i = gv.m_i;
+    const auto p_i = gv.p_i;
+    const auto v_i = gv.v_i;
+    const auto flags_i = gv.flags_i;
+    const auto active_i = gv.active_i;
+    const int ny1 = gv.geometry.ny + 1;
+
+    Kokkos::parallel_for(
+        "mpm::remap_velocity",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int n = active_i( a );
+            const int i = n / ny1;
+            const int j = n % ny1;
+            p_i( i, j, 0 ) = sums.take( n, 0 );
+            p_i( i, j, 1 ) = sums.take( n, 1 );
+            if ( !( m_i( i, j ) > 0.0 ) )
+                return;
             double v_x = p_i( i, j, 0 ) / m_i( i, j );
             double v_y = p_i( i, j, 1 ) / m_i( i, j );
             physics::applyVelocityBC( flags_i( i, j ), v_x, v_y );

@@ -1,7 +1,9 @@
 #ifndef MPM_GRID_UPDATE_TWO_PHASE_HPP
 #define MPM_GRID_UPDATE_TWO_PHASE_HPP
 
+#include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_p2g_two_phase.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_nodal_update.hpp>
 #include <physics/mpm_two_phase.hpp>
@@ -12,19 +14,26 @@ namespace mpm
 {
 //---------------------------------------------------------------------------//
 /*!
-  \brief Grid update of the two-phase step on the active nodes: new solid
-  and water velocities with the drag implicit (TwoPhaseNodalUpdate), the
-  solid's boundary flags and the water's impermeability ties. The water
-  force (per unit water volume) is scaled by the nodal n S = m_w / (rho_w
-  vol); the drag comes from the nodal mean permeability (physics::nodalDrag).
+  \brief Grid update of the two-phase step: lists the nodes the P2G
+  scatter touched into gv.active_i, takes their sums into the grid fields
+  (gv.m_i = solid mass, gv.p_i = solid momentum, gv.f_i = mixture force,
+  and the WaterGridViews fields), then, on the nodes with solid mass, the
+  new solid and water velocities with the drag implicit
+  (TwoPhaseNodalUpdate), the solid's boundary flags and the water's
+  impermeability ties. The water force (per unit water volume) is scaled
+  by the nodal n S = m_w / (rho_w vol); the drag comes from the nodal mean
+  permeability (physics::nodalDrag).
 */
-template <class ExecSpace>
-void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-                         WaterGridViews<ExecSpace>& wg, const double dt,
-                         const double damping, const double water_density,
-                         const double water_viscosity,
-                         const double inertia_scaling = 1.0 )
+template <class ExecSpace, class Duplication>
+void gridUpdateTwoPhase(
+    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+    WaterGridViews<ExecSpace>& wg,
+    const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>& sums,
+    const double dt, const double damping, const double water_density,
+    const double water_viscosity, const double inertia_scaling = 1.0 )
 {
+    using F = TwoPhaseNodeField;
+    gv.num_active = sums.listTouched( exec_space, gv.active_i );
     const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
     const auto m_s_i = gv.m_i;
     const auto mv_s_i = gv.p_i;
@@ -47,25 +56,48 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
         "mpm::grid_update_two_phase",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
         KOKKOS_LAMBDA( const int a ) {
-            const int i = active_i( a ) / ny1;
-            const int j = active_i( a ) % ny1;
+            const int n = active_i( a );
+            const int i = n / ny1;
+            const int j = n % ny1;
+            const double m_s = sums.take( n, F::m_s );
+            const double m_w = sums.take( n, F::m_w );
+            const double vol = sums.take( n, F::vol );
+            const double q = sums.take( n, F::q );
+            double mv_s[2], f_m[2], mv_w[2], f_w[2];
+            for ( int d = 0; d < 2; ++d )
+            {
+                mv_s[d] = sums.take( n, F::mv_s_x + d );
+                f_m[d] = sums.take( n, F::f_m_x + d );
+                mv_w[d] = sums.take( n, F::mv_w_x + d );
+                f_w[d] = sums.take( n, F::f_w_x + d );
+                mv_s_i( i, j, d ) = mv_s[d];
+                f_m_i( i, j, d ) = f_m[d];
+                mv_w_i( i, j, d ) = mv_w[d];
+                f_w_i( i, j, d ) = f_w[d];
+            }
+            m_s_i( i, j ) = m_s;
+            m_w_i( i, j ) = m_w;
+            vol_i( i, j ) = vol;
+            q_i( i, j ) = q;
+            // Nodes touched with zero weight only carry no mass.
+            if ( !( m_s > 0.0 ) )
+                return;
+
             const int flags = flags_i( i, j );
             const int flags_w = flags_w_i( i, j );
             // Nodal water volume fraction n S.
-            const double nS = m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
+            const double nS = m_w / ( water_density * vol );
             // Zero permeability (k_rel = 0) locks the water to the solid.
-            const bool locked = !( q_i( i, j ) > 0.0 );
+            const bool locked = !( q > 0.0 );
             const double drag =
                 locked ? 0.0
-                       : physics::nodalDrag( nS, water_viscosity, vol_i( i, j ),
-                                             q_i( i, j ) );
+                       : physics::nodalDrag( nS, water_viscosity, vol, q );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r = update(
-                    m_s_i( i, j ), m_w_i( i, j ), mv_s_i( i, j, d ),
-                    mv_w_i( i, j, d ), f_m_i( i, j, d ), nS * f_w_i( i, j, d ),
-                    drag, flags & bit, locked || ( flags_w & bit ) );
+                const auto r =
+                    update( m_s, m_w, mv_s[d], mv_w[d], f_m[d], nS * f_w[d],
+                            drag, flags & bit, locked || ( flags_w & bit ) );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;
@@ -76,13 +108,16 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief MUSL: nodal velocities of both phases from the remapped momenta,
-  with the solid's flags and the water ties (v_w = v_s on tied components).
+  \brief MUSL on the nodes of gv.active_i: takes the remapped momenta of
+  both phases into gv.p_i and wg.mv_w_i and, where there is solid mass,
+  the nodal velocities, with the solid's flags and the water ties
+  (v_w = v_s on tied components).
 */
-template <class ExecSpace>
+template <class ExecSpace, class Duplication>
 void remapVelocityTwoPhase( const ExecSpace& exec_space,
                             GridViews<ExecSpace>& gv,
-                            WaterGridViews<ExecSpace>& wg )
+                            WaterGridViews<ExecSpace>& wg,
+                            const GridScatter<ExecSpace, 4, Duplication>& sums )
 {
     const auto m_s_i = gv.m_i;
     const auto mv_s_i = gv.p_i;
@@ -99,8 +134,16 @@ void remapVelocityTwoPhase( const ExecSpace& exec_space,
         "mpm::remap_velocity_two_phase",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
         KOKKOS_LAMBDA( const int a ) {
-            const int i = active_i( a ) / ny1;
-            const int j = active_i( a ) % ny1;
+            const int n = active_i( a );
+            const int i = n / ny1;
+            const int j = n % ny1;
+            for ( int d = 0; d < 2; ++d )
+            {
+                mv_s_i( i, j, d ) = sums.take( n, d );
+                mv_w_i( i, j, d ) = sums.take( n, 2 + d );
+            }
+            if ( !( m_s_i( i, j ) > 0.0 ) )
+                return;
             double v_s[2] = { mv_s_i( i, j, 0 ) / m_s_i( i, j ),
                               mv_s_i( i, j, 1 ) / m_s_i( i, j ) };
             physics::applyVelocityBC( flags_i( i, j ), v_s[0], v_s[1] );

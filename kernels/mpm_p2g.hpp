@@ -1,6 +1,7 @@
 #ifndef MPM_P2G_HPP
 #define MPM_P2G_HPP
 
+#include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_scatter.hpp>
@@ -9,32 +10,48 @@
 
 namespace mpm
 {
+//! Fields of the dry P2G sums of a node.
+struct DryNodeField
+{
+    enum : int
+    {
+        m,
+        p_x,
+        p_y,
+        f_x,
+        f_y,
+        count
+    };
+};
+
+//! Nodal sums of the dry P2G scatter.
+template <class ExecSpace,
+          class Duplication = typename ScatterDuplication<ExecSpace>::type>
+using DryNodeSums = GridScatter<ExecSpace, DryNodeField::count, Duplication>;
+
+//! Nodal sums of a momentum remap (p_x, p_y).
+template <class ExecSpace,
+          class Duplication = typename ScatterDuplication<ExecSpace>::type>
+using MomentumSums = GridScatter<ExecSpace, 2, Duplication>;
+
 //---------------------------------------------------------------------------//
 /*!
-  \brief Particle-to-grid scatter of mass, momentum and force:
+  \brief Particle-to-grid scatter of mass, momentum and force into `sums`
+  (DryNodeField), touching the 4 nodes of every active point:
   m_i = sum N m_p, p_i = sum N m_p v_p,
   f_i = sum N (m_p g + load) - sum vol_p sigma_p . grad N.
   `load_force(l, d)` is the force (N) on a point of load l; points with
-  load_p < 0 carry none. Resets the grid fields it writes.
+  load_p < 0 carry none.
 */
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type,
-          class LoadView>
-void p2gMassMomentumForce( const ExecSpace& exec_space,
-                           const ParticleViews<ExecSpace>& pv,
-                           GridViews<ExecSpace>& gv, const double gravity_x,
-                           const double gravity_y, const LoadView& load_force )
+template <class ExecSpace, class Duplication, class LoadView>
+void scatterMassMomentumForce(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const physics::GridGeometry& grid, const double gravity_x,
+    const double gravity_y, const LoadView& load_force,
+    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& sums )
 {
-    // Reset write views.
-    Kokkos::deep_copy( exec_space, gv.m_i, 0.0 );
-    Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
-    Kokkos::deep_copy( exec_space, gv.f_i, 0.0 );
-
-    auto m_sv = createScatterSum<ExecSpace, Duplication>( gv.m_i );
-    auto p_sv = createScatterSum<ExecSpace, Duplication>( gv.p_i );
-    auto f_sv = createScatterSum<ExecSpace, Duplication>( gv.f_i );
-
-    const auto grid = gv.geometry;
+    using F = DryNodeField;
+    const int ny1 = grid.ny + 1;
     const auto x_p = pv.x_p;
     const auto v_p = pv.v_p;
     const auto m_p = pv.m_p;
@@ -53,9 +70,7 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
 
-            auto m_i = m_sv.access();
-            auto p_i = p_sv.access();
-            auto f_i = f_sv.access();
+            const auto node = sums.access();
             const double m = m_p( p );
             const double vol = vol_p( p );
             const double s_xx = sigma_p( p, 0 );
@@ -68,22 +83,73 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
                 m * gravity_y + ( load >= 0 ? load_force( load, 1 ) : 0.0 );
             for ( int k = 0; k < 4; ++k )
             {
-                const int i = ci + ( k & 1 );
-                const int j = cj + ( k >> 1 );
-                m_i( i, j ) += w[k] * m;
-                p_i( i, j, 0 ) += w[k] * m * v_p( p, 0 );
-                p_i( i, j, 1 ) += w[k] * m * v_p( p, 1 );
-                f_i( i, j, 0 ) +=
-                    w[k] * f_x - vol * ( s_xx * dwdx[k] + s_xy * dwdy[k] );
-                f_i( i, j, 1 ) +=
-                    w[k] * f_y - vol * ( s_xy * dwdx[k] + s_yy * dwdy[k] );
+                const int n = nodeIndex( ci + ( k & 1 ), cj + ( k >> 1 ), ny1 );
+                node.touch( n );
+                node.add( n, F::m, w[k] * m );
+                node.add( n, F::p_x, w[k] * m * v_p( p, 0 ) );
+                node.add( n, F::p_y, w[k] * m * v_p( p, 1 ) );
+                node.add( n, F::f_x,
+                          w[k] * f_x -
+                              vol * ( s_xx * dwdx[k] + s_xy * dwdy[k] ) );
+                node.add( n, F::f_y,
+                          w[k] * f_y -
+                              vol * ( s_xy * dwdx[k] + s_yy * dwdy[k] ) );
             }
         } );
+}
 
-    // Complete the scatter.
-    Kokkos::Experimental::contribute( gv.m_i, m_sv );
-    Kokkos::Experimental::contribute( gv.p_i, p_sv );
-    Kokkos::Experimental::contribute( gv.f_i, f_sv );
+//---------------------------------------------------------------------------//
+//! Takes the dry P2G sums of node n = (i, j) into m_i, p_i and f_i.
+template <class Sums, class ScalarView, class VectorView>
+KOKKOS_INLINE_FUNCTION void
+takeMassMomentumForce( const Sums& sums, const int n, const int i, const int j,
+                       const ScalarView& m_i, const VectorView& p_i,
+                       const VectorView& f_i )
+{
+    using F = DryNodeField;
+    m_i( i, j ) = sums.take( n, F::m );
+    p_i( i, j, 0 ) = sums.take( n, F::p_x );
+    p_i( i, j, 1 ) = sums.take( n, F::p_y );
+    f_i( i, j, 0 ) = sums.take( n, F::f_x );
+    f_i( i, j, 1 ) = sums.take( n, F::f_y );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Particle-to-grid scatter of mass, momentum and force into gv.m_i,
+  gv.p_i and gv.f_i (scatterMassMomentumForce with a temporary sum; the
+  time loop keeps its sums between steps). Resets the grid fields it
+  writes; gv.active_i lists the touched nodes afterwards.
+*/
+template <class ExecSpace,
+          class Duplication = typename ScatterDuplication<ExecSpace>::type,
+          class LoadView>
+void p2gMassMomentumForce( const ExecSpace& exec_space,
+                           const ParticleViews<ExecSpace>& pv,
+                           GridViews<ExecSpace>& gv, const double gravity_x,
+                           const double gravity_y, const LoadView& load_force )
+{
+    const DryNodeSums<ExecSpace, Duplication> sums( "p2g_sums",
+                                                    gv.geometry.numNodes() );
+    scatterMassMomentumForce( exec_space, pv, gv.geometry, gravity_x, gravity_y,
+                              load_force, sums );
+    Kokkos::deep_copy( exec_space, gv.m_i, 0.0 );
+    Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
+    Kokkos::deep_copy( exec_space, gv.f_i, 0.0 );
+    gv.num_active = sums.listTouched( exec_space, gv.active_i );
+
+    const auto m_i = gv.m_i;
+    const auto p_i = gv.p_i;
+    const auto f_i = gv.f_i;
+    const auto active_i = gv.active_i;
+    const int ny1 = gv.geometry.ny + 1;
+    Kokkos::parallel_for(
+        "mpm::take_mass_momentum_force",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int n = active_i( a );
+            takeMassMomentumForce( sums, n, n / ny1, n % ny1, m_i, p_i, f_i );
+        } );
 }
 
 //! p2gMassMomentumForce without loads.
@@ -100,19 +166,37 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
 }
 
 //---------------------------------------------------------------------------//
+//! MUSL remap scatter of one point's momentum, p_i += N m_p v_p, into
+//! fields (field, field + 1) of its 4 nodes.
+template <class Access>
+KOKKOS_INLINE_FUNCTION void
+scatterPointMomentum( const Access& node, const int ci, const int cj,
+                      const int ny1, const double w[4], const double m,
+                      const double v_x, const double v_y, const int field = 0 )
+{
+    for ( int k = 0; k < 4; ++k )
+    {
+        const int n = nodeIndex( ci + ( k & 1 ), cj + ( k >> 1 ), ny1 );
+        node.add( n, field, w[k] * m * v_x );
+        node.add( n, field + 1, w[k] * m * v_y );
+    }
+}
+
+//---------------------------------------------------------------------------//
 /*!
-  \brief MUSL remap: scatter the updated point momenta, p_i = sum N m_p v_p.
-  Masses are unchanged from the first scatter of the step.
+  \brief MUSL remap: scatter the updated point momenta, p_i = sum N m_p v_p,
+  into gv.p_i on the nodes listed in gv.active_i (those of the last
+  p2gMassMomentumForce; masses are unchanged from it).
 */
 template <class ExecSpace,
           class Duplication = typename ScatterDuplication<ExecSpace>::type>
 void p2gMomentum( const ExecSpace& exec_space,
                   const ParticleViews<ExecSpace>& pv, GridViews<ExecSpace>& gv )
 {
-    Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
-    auto p_sv = createScatterSum<ExecSpace, Duplication>( gv.p_i );
-
+    const MomentumSums<ExecSpace, Duplication> sums( "remap_sums",
+                                                     gv.geometry.numNodes() );
     const auto grid = gv.geometry;
+    const int ny1 = grid.ny + 1;
     const auto x_p = pv.x_p;
     const auto v_p = pv.v_p;
     const auto m_p = pv.m_p;
@@ -127,17 +211,20 @@ void p2gMomentum( const ExecSpace& exec_space,
             int ci, cj;
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            auto p_i = p_sv.access();
-            for ( int k = 0; k < 4; ++k )
-            {
-                const int i = ci + ( k & 1 );
-                const int j = cj + ( k >> 1 );
-                p_i( i, j, 0 ) += w[k] * m_p( p ) * v_p( p, 0 );
-                p_i( i, j, 1 ) += w[k] * m_p( p ) * v_p( p, 1 );
-            }
+            scatterPointMomentum( sums.access(), ci, cj, ny1, w, m_p( p ),
+                                  v_p( p, 0 ), v_p( p, 1 ) );
         } );
 
-    Kokkos::Experimental::contribute( gv.p_i, p_sv );
+    const auto p_i = gv.p_i;
+    const auto active_i = gv.active_i;
+    Kokkos::parallel_for(
+        "mpm::take_momentum",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int n = active_i( a );
+            p_i( n / ny1, n % ny1, 0 ) = sums.take( n, 0 );
+            p_i( n / ny1, n % ny1, 1 ) = sums.take( n, 1 );
+        } );
 }
 
 } // namespace mpm

@@ -5,54 +5,27 @@
 #include <physics/mpm_grid_geometry.hpp>
 
 #include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
 
 namespace mpm
 {
 //---------------------------------------------------------------------------//
 /*!
-  \brief Moves the points by their displacement increment, x_p += du_p.
-  Returns the smallest index of a point now outside the grid, or -1.
-  With `remove_outside`, such points are marked removed instead and
-  `num_removed` counts them. A non-finite position is not "outside": it is
-  left for checkStability to report as an instability.
+  \brief Moves point p by its displacement increment, x_p += du_p, and
+  returns true if it is now outside the grid. A non-finite position is not
+  "outside": it is left for the stability check to report as an
+  instability.
 */
-template <class ExecSpace>
-int updatePositions( const ExecSpace& exec_space,
-                     const ParticleViews<ExecSpace>& pv,
-                     const physics::GridGeometry& grid,
-                     const bool remove_outside, int& num_removed )
+template <class VectorView>
+KOKKOS_INLINE_FUNCTION bool movePoint( const int p, const VectorView& x_p,
+                                       const VectorView& du_p,
+                                       const physics::GridGeometry& grid )
 {
-    const auto x_p = pv.x_p;
-    const auto du_p = pv.du_p;
-    const auto status_p = pv.status_p;
-    const int none = pv.size();
-    int first_outside = none;
-    int removed = 0;
-
-    Kokkos::parallel_reduce(
-        "mpm::update_positions",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, int& first, int& count ) {
-            if ( status_p( p ) != point_active )
-                return;
-            x_p( p, 0 ) += du_p( p, 0 );
-            x_p( p, 1 ) += du_p( p, 1 );
-            int ci, cj;
-            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) &&
-                 Kokkos::Experimental::isfinite( x_p( p, 0 ) + x_p( p, 1 ) ) )
-            {
-                if ( remove_outside )
-                {
-                    status_p( p ) = point_removed;
-                    ++count;
-                }
-                else if ( p < first )
-                    first = p;
-            }
-        },
-        Kokkos::Min<int>( first_outside ), Kokkos::Sum<int>( removed ) );
-    num_removed = removed;
-    return first_outside >= none ? -1 : first_outside;
+    x_p( p, 0 ) += du_p( p, 0 );
+    x_p( p, 1 ) += du_p( p, 1 );
+    int ci, cj;
+    return !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) &&
+           Kokkos::Experimental::isfinite( x_p( p, 0 ) + x_p( p, 1 ) );
 }
 
 } // namespace mpm

@@ -2,7 +2,7 @@
 #define MPM_SCATTER_HPP
 
 #include <Kokkos_Core.hpp>
-#include <Kokkos_ScatterView.hpp>
+#include <Kokkos_ScatterView.hpp> // the Duplication and Contribution tags
 
 #include <type_traits>
 
@@ -31,16 +31,6 @@ using ScatterContribution = typename std::conditional<
         std::is_same<ExecSpace, Kokkos::Serial>::value,
     Kokkos::Experimental::ScatterNonAtomic,
     Kokkos::Experimental::ScatterAtomic>::type;
-
-//! A summing ScatterView over `view` with the chosen strategy.
-template <class ExecSpace, class Duplication, class ViewType>
-auto createScatterSum( const ViewType& view )
-{
-    namespace KE = Kokkos::Experimental;
-    return KE::create_scatter_view<KE::ScatterSum, Duplication,
-                                   ScatterContribution<ExecSpace, Duplication>>(
-        view );
-}
 
 } // namespace mpm
 

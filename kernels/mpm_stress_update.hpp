@@ -13,23 +13,63 @@ namespace mpm
 {
 //---------------------------------------------------------------------------//
 /*!
-  \brief Stress update of every point from its velocity gradient: Jaumann
-  rotation, then the point's constitutive model on the strain increment
-  sym(L) dt; accumulates strain and updates the volume by det(I + L dt).
+  \brief Stress update of one point from its velocity gradient L: Jaumann
+  rotation, then its constitutive model on the strain increment sym(L) dt;
+  accumulates strain and updates the volume by det(I + L dt).
 */
+template <class ExecSpace>
+struct StressPointUpdate
+{
+    using pv_type = ParticleViews<ExecSpace>;
+    physics::Kinematics kinematics;
+    typename pv_type::tensor_view sigma_p;
+    typename pv_type::tensor_view eps_p;
+    typename pv_type::scalar_view eps_p_bar_p;
+    typename pv_type::scalar_view vol_p;
+
+    StressPointUpdate( const ParticleViews<ExecSpace>& pv, const double dt )
+        : kinematics{ dt }
+        , sigma_p( pv.sigma_p )
+        , eps_p( pv.eps_p )
+        , eps_p_bar_p( pv.eps_p_bar_p )
+        , vol_p( pv.vol_p )
+    {
+    }
+
+    KOKKOS_INLINE_FUNCTION void
+    operator()( const int p, const double L[2][2],
+                const physics::MaterialParams& params ) const
+    {
+        double de[4];
+        kinematics.strainIncrement( L, de );
+        double s[4] = { sigma_p( p, 0 ), sigma_p( p, 1 ), sigma_p( p, 2 ),
+                        sigma_p( p, 3 ) };
+        kinematics.rotate( L, s );
+
+        if ( params.model == physics::Model::MohrCoulomb )
+            physics::MohrCoulomb{}( params, de, s, eps_p_bar_p( p ) );
+        else
+            physics::LinearElastic{}( params, de, s );
+
+        for ( int c = 0; c < 4; ++c )
+        {
+            sigma_p( p, c ) = s[c];
+            eps_p( p, c ) += de[c];
+        }
+        vol_p( p ) *= kinematics.volumeRatio( L );
+    }
+};
+
+//---------------------------------------------------------------------------//
+//! Stress update of every active point from its grad_v_p
+//! (StressPointUpdate).
 template <class ExecSpace>
 void stressUpdate( const ExecSpace& exec_space,
                    const ParticleViews<ExecSpace>& pv,
                    const physics::MaterialTable& materials, const double dt )
 {
-    const physics::Kinematics kinematics{ dt };
-    const physics::LinearElastic linear_elastic{};
-    const physics::MohrCoulomb mohr_coulomb{};
+    const StressPointUpdate<ExecSpace> update( pv, dt );
     const auto grad_v_p = pv.grad_v_p;
-    const auto sigma_p = pv.sigma_p;
-    const auto eps_p = pv.eps_p;
-    const auto eps_p_bar_p = pv.eps_p_bar_p;
-    const auto vol_p = pv.vol_p;
     const auto material_p = pv.material_p;
     const auto status_p = pv.status_p;
 
@@ -42,24 +82,7 @@ void stressUpdate( const ExecSpace& exec_space,
             const double L[2][2] = {
                 { grad_v_p( p, 0, 0 ), grad_v_p( p, 0, 1 ) },
                 { grad_v_p( p, 1, 0 ), grad_v_p( p, 1, 1 ) } };
-            double de[4];
-            kinematics.strainIncrement( L, de );
-            double s[4] = { sigma_p( p, 0 ), sigma_p( p, 1 ), sigma_p( p, 2 ),
-                            sigma_p( p, 3 ) };
-            kinematics.rotate( L, s );
-
-            const physics::MaterialParams& params = materials[material_p( p )];
-            if ( params.model == physics::Model::MohrCoulomb )
-                mohr_coulomb( params, de, s, eps_p_bar_p( p ) );
-            else
-                linear_elastic( params, de, s );
-
-            for ( int c = 0; c < 4; ++c )
-            {
-                sigma_p( p, c ) = s[c];
-                eps_p( p, c ) += de[c];
-            }
-            vol_p( p ) *= kinematics.volumeRatio( L );
+            update( p, L, materials[material_p( p )] );
         } );
 }
 

@@ -19,6 +19,39 @@ struct WaveSpeedLimit
 };
 
 //---------------------------------------------------------------------------//
+//! P-wave speed sqrt(E_c / rho) of a dry point of mass m and volume vol,
+//! m/s.
+KOKKOS_INLINE_FUNCTION double waveSpeedDry( const physics::MaterialParams& m,
+                                            const double mass,
+                                            const double vol )
+{
+    const double rho = mass / vol;
+    return Kokkos::Experimental::sqrt( m.constrainedModulus() / rho );
+}
+
+//! Fastest wave of a two-phase point (physics::twoPhaseWaveSpeed with the
+//! saturated fluid stiffness, see criticalTimeStepTwoPhase), m/s.
+KOKKOS_INLINE_FUNCTION double
+waveSpeedTwoPhase( const physics::MaterialParams& m,
+                   const physics::WaterParams& water, const double mass,
+                   const double vol, const double n, const double S )
+{
+    const double rho_m = mass / vol + n * S * water.density;
+    return physics::twoPhaseWaveSpeed( m.constrainedModulus(), rho_m,
+                                       water.density, n, S, 0.0,
+                                       water.bulk_modulus );
+}
+
+//! Stable step h / (c + |v|) of a point (Courant number 1), s.
+KOKKOS_INLINE_FUNCTION double pointTimeStep( const double cell_size,
+                                             const double c, const double v_x,
+                                             const double v_y )
+{
+    const double speed = Kokkos::Experimental::sqrt( v_x * v_x + v_y * v_y );
+    return cell_size / ( c + speed );
+}
+
+//---------------------------------------------------------------------------//
 /*!
   \brief CFL reduction: the P-wave speed of each point,
   c_p = sqrt(E_c / rho_p), rho_p = m_p / vol_p, gives the stable step
@@ -30,7 +63,6 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
                                  const physics::MaterialTable& materials,
                                  const double cell_size )
 {
-    namespace KE = Kokkos::Experimental;
     const auto v_p = pv.v_p;
     const auto m_p = pv.m_p;
     const auto vol_p = pv.vol_p;
@@ -43,12 +75,10 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
             if ( status_p( p ) != point_active )
                 return;
-            const double rho = m_p( p ) / vol_p( p );
-            const double c = KE::sqrt(
-                materials[material_p( p )].constrainedModulus() / rho );
-            const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
-                                           v_p( p, 1 ) * v_p( p, 1 ) );
-            const double dt = cell_size / ( c + speed );
+            const double c = waveSpeedDry( materials[material_p( p )], m_p( p ),
+                                           vol_p( p ) );
+            const double dt =
+                pointTimeStep( cell_size, c, v_p( p, 0 ), v_p( p, 1 ) );
             dt_min = dt < dt_min ? dt : dt_min;
             c_max = c > c_max ? c : c_max;
         },
@@ -75,7 +105,6 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double cell_size )
 {
-    namespace KE = Kokkos::Experimental;
     const auto v_p = pv.v_p;
     const auto m_p = pv.m_p;
     const auto vol_p = pv.vol_p;
@@ -90,15 +119,11 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
         KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
             if ( status_p( p ) != point_active )
                 return;
-            const double n = n_p( p );
-            const double S = S_p( p );
-            const double rho_m = m_p( p ) / vol_p( p ) + n * S * water.density;
-            const double c = physics::twoPhaseWaveSpeed(
-                materials[material_p( p )].constrainedModulus(), rho_m,
-                water.density, n, S, 0.0, water.bulk_modulus );
-            const double speed = KE::sqrt( v_p( p, 0 ) * v_p( p, 0 ) +
-                                           v_p( p, 1 ) * v_p( p, 1 ) );
-            const double dt = cell_size / ( c + speed );
+            const double c =
+                waveSpeedTwoPhase( materials[material_p( p )], water, m_p( p ),
+                                   vol_p( p ), n_p( p ), S_p( p ) );
+            const double dt =
+                pointTimeStep( cell_size, c, v_p( p, 0 ), v_p( p, 1 ) );
             dt_min = dt < dt_min ? dt : dt_min;
             c_max = c > c_max ? c : c_max;
         },

@@ -1,6 +1,7 @@
 #ifndef MPM_VELOCITY_GRADIENT_HPP
 #define MPM_VELOCITY_GRADIENT_HPP
 
+#include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_scatter.hpp>
@@ -28,6 +29,40 @@ gradientAt( const int ci, const int cj, const double dwdx[4],
             L[d][1] += v_i( i, j, d ) * dwdy[k];
         }
     }
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Water divergence of one point for the water balance (Eq. 8), from
+  the divergence of the relative flux nS (v_w - v_s) interpolated from the
+  nodes (nodal nS = m_w / (rho_w vol)):
+  div v_w = div( nS (v_w - v_s) ) / (nS)_p + div v_s. Then
+  nS div v_w + (1 - n) S div v_s = div q + S div v_s is conservative: the
+  flux leaving one point enters its neighbours, also across a wetting
+  front where nS jumps (the point-wise nS_p div v_w dropped
+  (v_w - v_s) . grad(nS) and lost about half of the infiltrating water
+  there). L is the point's solid velocity gradient, nS_p its n S.
+*/
+template <class ScalarView, class VectorView>
+KOKKOS_INLINE_FUNCTION double
+waterDivergenceAt( const int ci, const int cj, const double dwdx[4],
+                   const double dwdy[4], const VectorView& v_s_i,
+                   const VectorView& v_w_i, const ScalarView& m_w_i,
+                   const ScalarView& vol_i, const double water_density,
+                   const double nS_p, const double L[2][2] )
+{
+    double div_q = 0.0;
+    for ( int k = 0; k < 4; ++k )
+    {
+        const int i = ci + ( k & 1 );
+        const int j = cj + ( k >> 1 );
+        if ( !( m_w_i( i, j ) > 0.0 ) )
+            continue;
+        const double nS_i = m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
+        div_q += nS_i * ( ( v_w_i( i, j, 0 ) - v_s_i( i, j, 0 ) ) * dwdx[k] +
+                          ( v_w_i( i, j, 1 ) - v_s_i( i, j, 1 ) ) * dwdy[k] );
+    }
+    return ( nS_p > 0.0 ? div_q / nS_p : 0.0 ) + L[0][0] + L[1][1];
 }
 
 //---------------------------------------------------------------------------//
@@ -64,97 +99,54 @@ void velocityGradient( const ExecSpace& exec_space,
 }
 
 //---------------------------------------------------------------------------//
-/*!
-  \brief B-bar (Hughes 1980): replaces the volumetric part of each point's
-  velocity gradient by the volume-weighted average over the points of its
-  cell, tr(L_p) <- sum_c vol tr(L) / sum_c vol.
-*/
+//! Fields of the B-bar cell sums: point volume, volume times tr(L) and
+//! (two-phase) volume times div v_w.
+struct CellField
+{
+    enum : int
+    {
+        vol,
+        dvol,
+        div_w,
+        count
+    };
+};
+
+//! B-bar sums per cell (flat index ci * ny + cj).
 template <class ExecSpace,
           class Duplication = typename ScatterDuplication<ExecSpace>::type>
-void cellAverageVolumetricRate( const ExecSpace& exec_space,
-                                const ParticleViews<ExecSpace>& pv,
-                                GridViews<ExecSpace>& gv )
-{
-    Kokkos::deep_copy( exec_space, gv.vol_c, 0.0 );
-    Kokkos::deep_copy( exec_space, gv.dvol_c, 0.0 );
-    auto vol_sv = createScatterSum<ExecSpace, Duplication>( gv.vol_c );
-    auto dvol_sv = createScatterSum<ExecSpace, Duplication>( gv.dvol_c );
+using CellSums = GridScatter<ExecSpace, CellField::count, Duplication>;
 
+//---------------------------------------------------------------------------//
+/*!
+  \brief Velocity gradient of every point (velocityGradient; two-phase
+  also its water divergence, waterDivergenceAt) and, for B-bar (Hughes
+  1980), its volume and volume-weighted volumetric rates summed per cell
+  into `sums` (CellField). Pass empty water views for a dry scene.
+*/
+template <class ExecSpace, class Duplication>
+void velocityGradientCellSums(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
+    const WaterGridViews<ExecSpace>& wg, const double water_density,
+    const GridScatter<ExecSpace, CellField::count, Duplication>& sums )
+{
+    const bool two_phase = wv.allocated();
     const auto grid = gv.geometry;
+    const auto v_s_i = gv.v_i;
+    const auto v_w_i = wg.v_w_i;
+    const auto m_w_i = wg.m_w_i;
+    const auto vol_i = wg.vol_i;
     const auto x_p = pv.x_p;
     const auto vol_p = pv.vol_p;
     const auto grad_v_p = pv.grad_v_p;
     const auto status_p = pv.status_p;
-    const auto policy =
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() );
-
-    // Sum volume and volume change rate per cell.
-    Kokkos::parallel_for(
-        "mpm::bbar_cell_sums", policy, KOKKOS_LAMBDA( const int p ) {
-            int ci, cj;
-            if ( status_p( p ) != point_active ||
-                 !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
-                return;
-            auto vol_c = vol_sv.access();
-            auto dvol_c = dvol_sv.access();
-            vol_c( ci, cj ) += vol_p( p );
-            dvol_c( ci, cj ) +=
-                vol_p( p ) * ( grad_v_p( p, 0, 0 ) + grad_v_p( p, 1, 1 ) );
-        } );
-    Kokkos::Experimental::contribute( gv.vol_c, vol_sv );
-    Kokkos::Experimental::contribute( gv.dvol_c, dvol_sv );
-
-    // Replace each point's volumetric rate by its cell's average.
-    const auto vol_c = gv.vol_c;
-    const auto dvol_c = gv.dvol_c;
-    Kokkos::parallel_for(
-        "mpm::bbar_replace", policy, KOKKOS_LAMBDA( const int p ) {
-            int ci, cj;
-            if ( status_p( p ) != point_active ||
-                 !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
-                return;
-            const double tr_bar = dvol_c( ci, cj ) / vol_c( ci, cj );
-            const double correction =
-                0.5 * ( tr_bar - grad_v_p( p, 0, 0 ) - grad_v_p( p, 1, 1 ) );
-            grad_v_p( p, 0, 0 ) += correction;
-            grad_v_p( p, 1, 1 ) += correction;
-        } );
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Two-phase: the solid velocity gradient (as velocityGradient) and,
-  for the water balance (Eq. 8), the equivalent water divergence
-  div v_w = div( nS (v_w - v_s) ) / (nS)_p + div v_s, with the relative
-  flux nS (v_w - v_s) interpolated from the nodes (nodal nS =
-  m_w / (rho_w vol)). Then nS div v_w + (1 - n) S div v_s = div q +
-  S div v_s is conservative: the flux leaving one point enters its
-  neighbours, also across a wetting front where nS jumps (the point-wise
-  nS_p div v_w dropped (v_w - v_s) . grad(nS) and lost about half of the
-  infiltrating water there).
-*/
-template <class ExecSpace>
-void velocityGradientTwoPhase( const ExecSpace& exec_space,
-                               const ParticleViews<ExecSpace>& pv,
-                               const WaterParticleViews<ExecSpace>& wv,
-                               const GridViews<ExecSpace>& gv,
-                               const WaterGridViews<ExecSpace>& wg,
-                               const double water_density )
-{
-    const auto grid = gv.geometry;
-    const auto v_s_i = gv.v_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto x_p = pv.x_p;
-    const auto grad_v_p = pv.grad_v_p;
     const auto div_v_w_p = wv.div_v_w_p;
-    const auto status_p = pv.status_p;
-    const auto m_w_i = wg.m_w_i;
-    const auto vol_i = wg.vol_i;
     const auto n_p = wv.n_p;
     const auto S_p = wv.S_p;
 
     Kokkos::parallel_for(
-        "mpm::velocity_gradient_two_phase",
+        "mpm::velocity_gradient_cell_sums",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p ) {
             if ( status_p( p ) != point_active )
@@ -167,71 +159,78 @@ void velocityGradientTwoPhase( const ExecSpace& exec_space,
             for ( int a = 0; a < 2; ++a )
                 for ( int b = 0; b < 2; ++b )
                     grad_v_p( p, a, b ) = L[a][b];
-            // Divergence of the relative water flux nS (v_w - v_s).
-            double div_q = 0.0;
-            for ( int k = 0; k < 4; ++k )
+            double div_v_w = 0.0;
+            if ( two_phase )
             {
-                const int i = ci + ( k & 1 );
-                const int j = cj + ( k >> 1 );
-                if ( !( m_w_i( i, j ) > 0.0 ) )
-                    continue;
-                const double nS_i =
-                    m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
-                div_q += nS_i *
-                         ( ( v_w_i( i, j, 0 ) - v_s_i( i, j, 0 ) ) * dwdx[k] +
-                           ( v_w_i( i, j, 1 ) - v_s_i( i, j, 1 ) ) * dwdy[k] );
+                div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i,
+                                             m_w_i, vol_i, water_density,
+                                             n_p( p ) * S_p( p ), L );
+                div_v_w_p( p ) = div_v_w;
             }
-            const double nS_p = n_p( p ) * S_p( p );
-            div_v_w_p( p ) =
-                ( nS_p > 0.0 ? div_q / nS_p : 0.0 ) + L[0][0] + L[1][1];
+            // Points on the grid's far edges belong to no cell.
+            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+                return;
+            const int c = ci * grid.ny + cj;
+            const auto cell = sums.access();
+            cell.add( c, CellField::vol, vol_p( p ) );
+            cell.add( c, CellField::dvol, vol_p( p ) * ( L[0][0] + L[1][1] ) );
+            if ( two_phase )
+                cell.add( c, CellField::div_w, vol_p( p ) * div_v_w );
         } );
 }
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief B-bar for the water: replaces each point's water divergence by the
-  volume-weighted average over its cell (call after
-  cellAverageVolumetricRate, which leaves the cell volumes in gv.vol_c).
+  \brief Takes the B-bar cell sums into gv.vol_c, gv.dvol_c (and
+  wg.div_w_c if allocated). A cell with points has its lower-left node in
+  gv.active_i (the nodes the step's P2G touched), so the loop visits the
+  cells of those nodes.
 */
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type>
-void cellAverageWaterDivergence( const ExecSpace& exec_space,
-                                 const ParticleViews<ExecSpace>& pv,
-                                 const WaterParticleViews<ExecSpace>& wv,
-                                 const GridViews<ExecSpace>& gv,
-                                 WaterGridViews<ExecSpace>& wg )
+template <class ExecSpace, class Duplication>
+void takeCellSums(
+    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+    WaterGridViews<ExecSpace>& wg,
+    const GridScatter<ExecSpace, CellField::count, Duplication>& sums )
 {
-    Kokkos::deep_copy( exec_space, wg.div_w_c, 0.0 );
-    auto div_sv = createScatterSum<ExecSpace, Duplication>( wg.div_w_c );
-    const auto grid = gv.geometry;
-    const auto x_p = pv.x_p;
-    const auto vol_p = pv.vol_p;
-    const auto status_p = pv.status_p;
-    const auto div_v_w_p = wv.div_v_w_p;
-    const auto policy =
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() );
-
-    Kokkos::parallel_for(
-        "mpm::bbar_water_sums", policy, KOKKOS_LAMBDA( const int p ) {
-            int ci, cj;
-            if ( status_p( p ) != point_active ||
-                 !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
-                return;
-            auto div_c = div_sv.access();
-            div_c( ci, cj ) += vol_p( p ) * div_v_w_p( p );
-        } );
-    Kokkos::Experimental::contribute( wg.div_w_c, div_sv );
-
+    const bool two_phase = wg.div_w_c.extent( 0 ) > 0;
     const auto vol_c = gv.vol_c;
+    const auto dvol_c = gv.dvol_c;
     const auto div_w_c = wg.div_w_c;
+    const auto active_i = gv.active_i;
+    const int nx = gv.geometry.nx;
+    const int ny = gv.geometry.ny;
+
     Kokkos::parallel_for(
-        "mpm::bbar_water_replace", policy, KOKKOS_LAMBDA( const int p ) {
-            int ci, cj;
-            if ( status_p( p ) != point_active ||
-                 !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+        "mpm::take_cell_sums",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
+        KOKKOS_LAMBDA( const int a ) {
+            const int i = active_i( a ) / ( ny + 1 );
+            const int j = active_i( a ) % ( ny + 1 );
+            if ( i >= nx || j >= ny )
                 return;
-            div_v_w_p( p ) = div_w_c( ci, cj ) / vol_c( ci, cj );
+            const int c = i * ny + j;
+            vol_c( i, j ) = sums.take( c, CellField::vol );
+            dvol_c( i, j ) = sums.take( c, CellField::dvol );
+            if ( two_phase )
+                div_w_c( i, j ) = sums.take( c, CellField::div_w );
         } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief B-bar (Hughes 1980) of one point in cell (ci, cj): replaces the
+  volumetric part of its velocity gradient by the volume-weighted cell
+  average, tr(L) <- sum_c vol tr(L) / sum_c vol.
+*/
+template <class ScalarView>
+KOKKOS_INLINE_FUNCTION void
+cellAverageVolumetricRate( const int ci, const int cj, const ScalarView& vol_c,
+                           const ScalarView& dvol_c, double L[2][2] )
+{
+    const double tr_bar = dvol_c( ci, cj ) / vol_c( ci, cj );
+    const double correction = 0.5 * ( tr_bar - L[0][0] - L[1][1] );
+    L[0][0] += correction;
+    L[1][1] += correction;
 }
 
 } // namespace mpm

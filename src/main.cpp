@@ -1,5 +1,7 @@
 // rainslide: command-line interface.
 //   rainslide run CASE [--out DIR] [--backend serial|openmp] [--threads N]
+//                 [--restart CHECKPOINT] [--checkpoint-every-s S]
+//                 [--stop-after-steps N] [--quiet]
 //   rainslide check CASE
 #include <io/mpm_case_reader.hpp>
 #include <mpm_config.hpp>
@@ -10,14 +12,15 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <thread>
 
 namespace
 {
-//! Exit codes: 0 success, 1 run failed (unstable), 2 bad input, 130
-//! interrupted.
+//! Exit codes: 0 success, 1 run failed (unstable), 2 bad input (also a
+//! checkpoint that does not fit the case), 130 interrupted.
 constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_interrupted = 130;
@@ -84,6 +87,18 @@ int main( int argc, char* argv[] )
         ->check( CLI::Range( 1, 1024 ) )
         ->capture_default_str();
     run->add_flag( "--quiet", quiet, "no progress lines" );
+    run->add_option( "--restart", options.restart_file,
+                     "continue the run from this checkpoint (written by an "
+                     "earlier run of the same, unchanged case); --out "
+                     "defaults to its folder" );
+    run->add_option( "--checkpoint-every-s", options.checkpoint_interval_s,
+                     "simulated seconds between checkpoints (overrides "
+                     "solver.checkpoint_interval_s; 0 = only on Ctrl-C)" )
+        ->check( CLI::NonNegativeNumber );
+    run->add_option( "--stop-after-steps", options.stop_after_steps,
+                     "stop as on Ctrl-C (checkpoint, exit 130) after this many "
+                     "steps" )
+        ->check( CLI::PositiveNumber );
 
     CLI::App* check = app.add_subcommand( "check", "validate a case file" );
     check->add_option( "case", case_file, "case file (TOML)" )->required();
@@ -105,12 +120,23 @@ int main( int argc, char* argv[] )
         printCheckSummary( config );
         return 0;
     }
+    if ( options.out_dir.empty() && !options.restart_file.empty() )
+    {
+        const auto folder =
+            std::filesystem::path( options.restart_file ).parent_path();
+        options.out_dir = folder.empty() ? "." : folder.string();
+    }
     if ( options.out_dir.empty() )
         options.out_dir = "results/" + config.name;
     options.progress = !quiet;
     try
     {
         return runWithKokkos( config, options );
+    }
+    catch ( const mpm::RestartError& error )
+    {
+        std::cerr << "rainslide: error: " << error.what() << "\n";
+        return exit_bad_input;
     }
     catch ( const mpm::SimulationError& error )
     {

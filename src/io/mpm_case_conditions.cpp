@@ -282,7 +282,7 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
         TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
                        diag );
         r.checkKeys( { "where", "box_m", "flux_m_per_s", "length_m",
-                       "time_function", "ponding" },
+                       "time_function", "ponding", "follow_surface_s" },
                      "[[stages.inflows]]" );
         WaterInflow inflow;
         inflow.points = readSelection( r );
@@ -291,11 +291,30 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                       "m/s (rainfall intensity, volume per area and time)",
                       Need::Required )
                 .value_or( 0.0 );
-        inflow.length_m =
-            r.number( "length_m", Range::above( 0.0 ),
-                      "m (the length of surface receiving the flux)",
-                      Need::Required )
-                .value_or( inflow.length_m );
+        const toml::node* follow = r.find( "follow_surface_s" );
+        if ( follow )
+        {
+            inflow.follow_surface_interval_s =
+                r.number( "follow_surface_s", Range::above( 0.0 ),
+                          "s (how often the surface is re-detected)",
+                          Need::Required )
+                    .value_or( 0.0 );
+            if ( inflow.points.kind != PointSelection::Kind::SurfaceCells )
+                diag.keyError( *follow, r.keyPath( "follow_surface_s" ),
+                               "a rainfall that follows the surface needs "
+                               "where = \"surface_cells\"" );
+            if ( const toml::node* length = r.find( "length_m" ) )
+                diag.keyError( *length, r.keyPath( "length_m" ),
+                               "not allowed with follow_surface_s: the "
+                               "length is the surface's current horizontal "
+                               "projection" );
+        }
+        else
+            inflow.length_m =
+                r.number( "length_m", Range::above( 0.0 ),
+                          "m (the length of surface receiving the flux)",
+                          Need::Required )
+                    .value_or( inflow.length_m );
         inflow.time_function = readTimeFunction( r );
         inflow.ponding =
             r.boolean( "ponding", Need::Optional ).value_or( inflow.ponding );

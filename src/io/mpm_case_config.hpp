@@ -113,6 +113,10 @@ struct WaterInflow
     double length_m = 1.0;
     TimeFunction time_function;
     bool ponding = true;
+    //! > 0: the fed points are the current surface cells, re-detected
+    //! every this many seconds, and length_m is the surface's current
+    //! horizontal projection (rain falls vertically); 0: fixed selection.
+    double follow_surface_interval_s = 0.0;
 };
 
 //! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t).
@@ -246,11 +250,31 @@ struct SolverConfig
       sqrt(f) times larger. 1 = true dynamics.
     */
     double inertia_scaling = 1.0;
+    //! Simulated time between checkpoints (restart files); 0 = none.
+    double checkpoint_interval_s = 0.0;
+};
+
+//! A tracked material point: the one nearest to position_m when the run
+//! starts; its fields are recorded in probes.csv.
+struct ProbeConfig
+{
+    std::string name;
+    Point2 position_m{ 0.0, 0.0 };
+};
+
+//! [probes]: tracked points and how often they are recorded.
+struct ProbesConfig
+{
+    double interval_s = 0.0; //!< simulated time between records
+    std::vector<ProbeConfig> points;
 };
 
 struct CaseConfig
 {
     std::string file; //!< path of the case file it was read from
+    //! Canonical text of the case's keys (caseFingerprint); identifies the
+    //! case of a checkpoint. Empty for cases built in code.
+    std::string fingerprint;
     std::string name;
     std::string description;
     AnalysisType analysis = AnalysisType::Dry;
@@ -262,6 +286,7 @@ struct CaseConfig
     std::vector<BoundaryConfig> boundaries;
     std::vector<StageConfig> stages;
     SolverConfig solver;
+    ProbesConfig probes;
 };
 
 } // namespace mpm

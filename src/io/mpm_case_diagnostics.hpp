@@ -223,20 +223,24 @@ class Diagnostics
     {
     }
 
-    //! \brief Record an error at a source position.
-    void error( const toml::source_position& where, const std::string& text )
+    //! \brief Record an error at a source region; its file is the region's
+    //! (an included file) or, if unknown, the case file.
+    void error( const toml::source_region& where, const std::string& text )
     {
-        _entries.push_back(
-            { static_cast<int>( where.line ), static_cast<int>( where.column ),
-              _file_name + ":" + std::to_string( where.line ) + ":" +
-                  std::to_string( where.column ) + ": error: " + text } );
+        const std::string file =
+            where.path ? std::string( *where.path ) : _file_name;
+        _entries.push_back( { file, static_cast<int>( where.begin.line ),
+                              static_cast<int>( where.begin.column ),
+                              file + ":" + std::to_string( where.begin.line ) +
+                                  ":" + std::to_string( where.begin.column ) +
+                                  ": error: " + text } );
     }
 
     //! \brief Record "key 'path': text" at the position of a node.
     void keyError( const toml::node& node, const std::string& path,
                    const std::string& text )
     {
-        error( node.source().begin, "key '" + path + "': " + text );
+        error( node.source(), "key '" + path + "': " + text );
     }
 
     //! \brief Record "key 'path': expected ..., found ..." for a node.
@@ -258,12 +262,20 @@ class Diagnostics
     bool empty() const { return _entries.empty(); }
     std::size_t count() const { return _entries.size(); }
 
-    //! \brief All errors in file order, one per line (at most 20 shown).
+    //! \brief All errors in file order (the case file first, then included
+    //! files), one per line (at most 20 shown).
     std::string report() const
     {
         auto sorted = _entries;
         std::stable_sort( sorted.begin(), sorted.end(),
-                          []( const Entry& a, const Entry& b ) {
+                          [this]( const Entry& a, const Entry& b )
+                          {
+                              const bool a_main = a.file == _file_name;
+                              const bool b_main = b.file == _file_name;
+                              if ( a_main != b_main )
+                                  return a_main;
+                              if ( a.file != b.file )
+                                  return a.file < b.file;
                               return a.line != b.line ? a.line < b.line
                                                       : a.column < b.column;
                           } );
@@ -282,6 +294,7 @@ class Diagnostics
   private:
     struct Entry
     {
+        std::string file;
         int line;
         int column;
         std::string text;

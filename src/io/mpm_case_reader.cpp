@@ -1,6 +1,9 @@
 #include <io/mpm_case_analysis.hpp>
 #include <io/mpm_case_conditions.hpp>
+#include <io/mpm_case_fingerprint.hpp>
+#include <io/mpm_case_include.hpp>
 #include <io/mpm_case_materials.hpp>
+#include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
@@ -42,7 +45,8 @@ class CaseParser
     {
         TableReader root( root_table, "", _diag );
         root.checkKeys( { "case", "water", "grid", "particles", "materials",
-                          "bodies", "boundaries", "solver", "stages" },
+                          "bodies", "boundaries", "solver", "stages",
+                          "probes" },
                         "the top level of a case file" );
         parseCaseTable( root );
         parseWater( root );
@@ -63,11 +67,14 @@ class CaseParser
                 Impl::readBoundaries( *arr, "boundaries", _analysis, _diag );
         parseSolver( root );
         parseStages( root );
+        if ( const auto* t = root.subTable( "probes", Need::Optional ) )
+            _config.probes = Impl::readProbes(
+                *t, _grid_ok ? &_config.grid : nullptr, _diag );
     }
 
   private:
     //! Report a reference to a material that is not defined.
-    void unknownMaterial( const toml::source_position& where,
+    void unknownMaterial( const toml::source_region& where,
                           const std::string& path, const std::string& name )
     {
         std::string text = "key '" + path + "': unknown material '" + name +
@@ -257,7 +264,7 @@ class CaseParser
                 body.material = *name;
                 body.material_id = materialIndex( *name );
                 if ( body.material_id < 0 && !_material_names.empty() )
-                    unknownMaterial( r.find( "material" )->source().begin,
+                    unknownMaterial( r.find( "material" )->source(),
                                      path + ".material", *name );
             }
             if ( auto polygon =
@@ -292,7 +299,7 @@ class CaseParser
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
                        "remove_points_leaving_grid", "instability_speed_factor",
-                       "inertia_scaling" },
+                       "inertia_scaling", "checkpoint_interval_s" },
                      "[solver]" );
         SolverConfig& s = _config.solver;
         s.courant_number = r.number( "courant_number",
@@ -317,6 +324,11 @@ class CaseParser
         s.inertia_scaling = r.number( "inertia_scaling", Range::atLeast( 1.0 ),
                                       "(inertial mass factor)", Need::Optional )
                                 .value_or( s.inertia_scaling );
+        s.checkpoint_interval_s =
+            r.number( "checkpoint_interval_s", Range::atLeast( 0.0 ),
+                      "s of simulated time (0 = no checkpoints)",
+                      Need::Optional )
+                .value_or( s.checkpoint_interval_s );
     }
 
     void parseStages( TableReader& root )
@@ -420,7 +432,7 @@ class CaseParser
             const int id = materialIndex( name );
             if ( id < 0 )
             {
-                unknownMaterial( key.source().begin, sub_path, name );
+                unknownMaterial( key.source(), sub_path, name );
                 continue;
             }
             if ( !node.is_table() )
@@ -472,7 +484,7 @@ CaseConfig parseCase( const std::string& toml_text,
     catch ( const toml::parse_error& e )
     {
         Diagnostics syntax( file_name );
-        syntax.error( e.source().begin,
+        syntax.error( e.source(),
                       "invalid TOML: " + std::string( e.description() ) );
         throw CaseError( syntax.report() );
     }
@@ -480,9 +492,13 @@ CaseConfig parseCase( const std::string& toml_text,
     CaseConfig config;
     config.file = file_name;
     Diagnostics diag( file_name );
+    Impl::resolveIncludes( root, file_name, diag );
+    if ( !diag.empty() ) // without an included file, the rest is noise
+        throw CaseError( diag.report() );
     CaseParser( diag, config ).parse( root );
     if ( !diag.empty() )
         throw CaseError( diag.report() );
+    config.fingerprint = caseFingerprint( root );
     return config;
 }
 

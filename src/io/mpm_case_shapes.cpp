@@ -78,31 +78,37 @@ void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
     // Every vertex inside the grid (up to round-off).
     if ( !grid )
         return;
-    const GridConfig& g = *grid;
+    for ( std::size_t k = 0; k < n; ++k )
+    {
+        const std::string outside = outsideGridText( *grid, polygon[k] );
+        if ( outside.empty() )
+            continue;
+        diag.keyError( *arr.get( k ), indexed( path, k ),
+                       "expected a vertex " + outside );
+        return;
+    }
+}
+
+//---------------------------------------------------------------------------//
+std::string outsideGridText( const GridConfig& g, const Point2& point )
+{
     const double tol = 1e-9 * g.cell_size_m;
     auto upper = [&]( const int d )
     { return g.origin_m[d] + g.cells[d] * g.cell_size_m; };
-    for ( std::size_t k = 0; k < n; ++k )
+    bool inside = true;
+    for ( int d = 0; d < 2; ++d )
+        inside = inside && point[d] >= g.origin_m[d] - tol &&
+                 point[d] <= upper( d ) + tol;
+    if ( inside )
+        return "";
+    auto span = [&]( const int d )
     {
-        bool inside = true;
-        for ( int d = 0; d < 2; ++d )
-            inside = inside && polygon[k][d] >= g.origin_m[d] - tol &&
-                     polygon[k][d] <= upper( d ) + tol;
-        if ( inside )
-            continue;
-        auto span = [&]( const int d )
-        {
-            return "[" + formatNumber( g.origin_m[d] ) + ", " +
-                   formatNumber( upper( d ) ) + "]";
-        };
-        diag.keyError( *arr.get( k ), indexed( path, k ),
-                       "expected a vertex inside the grid, x in " + span( 0 ) +
-                           " m and y in " + span( 1 ) +
-                           " m (grid.origin_m + grid.cells * "
-                           "grid.cell_size_m), found " +
-                           pointText( polygon[k] ) + " m" );
-        return;
-    }
+        return "[" + formatNumber( g.origin_m[d] ) + ", " +
+               formatNumber( upper( d ) ) + "]";
+    };
+    return "inside the grid, x in " + span( 0 ) + " m and y in " + span( 1 ) +
+           " m (grid.origin_m + grid.cells * grid.cell_size_m), found " +
+           pointText( point ) + " m";
 }
 
 //---------------------------------------------------------------------------//

@@ -29,6 +29,11 @@ void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
                        Diagnostics& diag );
 
 //---------------------------------------------------------------------------//
+//! \brief "" if point lies inside the grid (up to round-off), else the text
+//! "inside the grid, x in [..] m and y in [..] m (...), found [x, y] m".
+std::string outsideGridText( const GridConfig& grid, const Point2& point );
+
+//---------------------------------------------------------------------------//
 //! \brief Check that the x of a boundary polyline increase strictly.
 void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
                     const std::string& path, Diagnostics& diag );

@@ -1,8 +1,10 @@
+#include <io/mpm_hdf5.hpp>
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_snapshot_writer.hpp>
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -17,147 +19,44 @@
 #include <type_traits>
 #include <variant>
 
-static_assert( std::is_same<hid_t, std::int64_t>::value,
-               "SnapshotWriter stores hid_t as std::int64_t (HDF5 >= 1.10)" );
-
 namespace mpm
 {
 namespace
 {
-//---------------------------------------------------------------------------//
-// " (HDF5: <API-level message>; <innermost message>)", or "".
-std::string hdf5ErrorDetail()
+using Impl::Hdf5Ops;
+
+// Who reports errors of the snapshot output.
+const char* const who = "mpm::SnapshotWriter";
+
+// Extents of a field: [n] (1 component) or [n x components].
+std::vector<hsize_t> fieldDims( const hsize_t n, const int components )
 {
-    std::vector<std::string> msgs;
-    const H5E_walk2_t collect = []( unsigned, const H5E_error2_t* err,
-                                    void* out ) -> herr_t
+    if ( components == 1 )
+        return { n };
+    return { n, static_cast<hsize_t>( components ) };
+}
+
+// Names of the datasets of a snapshot group, in creation order when the
+// group tracks it (files of this writer), else in name order.
+std::vector<std::string> fieldNames( const Hdf5Ops& h5, const hid_t group,
+                                     const std::string& object )
+{
+    std::vector<std::string> names;
+    const H5L_iterate_t collect = []( hid_t, const char* name,
+                                      const H5L_info_t*, void* out ) -> herr_t
     {
-        if ( err != nullptr && err->desc != nullptr )
-            static_cast<std::vector<std::string>*>( out )->push_back(
-                err->desc );
+        static_cast<std::vector<std::string>*>( out )->push_back( name );
         return 0;
     };
-    if ( H5Ewalk2( H5E_DEFAULT, H5E_WALK_UPWARD, collect, &msgs ) < 0 ||
-         msgs.empty() )
-        return "";
+    if ( H5Literate( group, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect,
+                     &names ) >= 0 )
+        return names;
     H5Eclear2( H5E_DEFAULT );
-    return " (HDF5: " + msgs.back() +
-           ( msgs.size() > 1 ? "; " + msgs.front() : "" ) + ")";
-}
-
-//---------------------------------------------------------------------------//
-// Checked HDF5 calls on one file, with HDF5's own error printing off for
-// the object's lifetime. check() throws a runtime_error naming the file, the
-// object and the operation; open() checks and keeps an id that closeAll()
-// closes (checked) and the destructor (error path) closes quietly.
-class Hdf5Ops
-{
-  public:
-    explicit Hdf5Ops( const std::string& file )
-        : _file( file )
-        , _saved( H5Eget_auto2( H5E_DEFAULT, &_func, &_data ) >= 0 )
-    {
-        H5Eset_auto2( H5E_DEFAULT, nullptr, nullptr );
-    }
-    ~Hdf5Ops()
-    {
-        for ( auto it = _ids.rbegin(); it != _ids.rend(); ++it )
-            it->closer( it->id );
-        if ( _saved )
-            H5Eset_auto2( H5E_DEFAULT, _func, _data );
-    }
-    template <class T>
-    T check( const T status, const char* operation,
-             const std::string& object ) const
-    {
-        if ( status < 0 )
-            throw std::runtime_error(
-                "mpm::SnapshotWriter: " + std::string( operation ) +
-                " failed for '" + object + "' in file '" + _file + "'" +
-                hdf5ErrorDetail() );
-        return status;
-    }
-    hid_t open( const hid_t id, const char* operation,
-                herr_t ( *closer )( hid_t ), const std::string& object )
-    {
-        _ids.push_back( { check( id, operation, object ), closer, object } );
-        return id;
-    }
-    void closeAll()
-    {
-        while ( !_ids.empty() )
-        {
-            const OpenId last = _ids.back();
-            _ids.pop_back();
-            check( last.closer( last.id ), "close", last.object );
-        }
-    }
-
-  private:
-    struct OpenId
-    {
-        hid_t id;
-        herr_t ( *closer )( hid_t );
-        std::string object;
-    };
-    std::string _file;
-    std::vector<OpenId> _ids;
-    H5E_auto2_t _func = nullptr;
-    void* _data = nullptr;
-    bool _saved;
-};
-
-//---------------------------------------------------------------------------//
-// Scalar attribute `name` on `loc` (`object` is its path, for messages);
-// strings are fixed-length, null-terminated UTF-8.
-using AttributeValue = std::variant<double, std::int64_t, std::string>;
-void writeAttribute( const std::string& file, const hid_t loc,
-                     const std::string& object, const char* name,
-                     const AttributeValue& value )
-{
-    const std::string at = object + "@" + name;
-    Hdf5Ops h5( file );
-    hid_t type = value.index() == 0 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;
-    const void* data =
-        std::visit( []( const auto& v ) -> const void* { return &v; }, value );
-    if ( const auto* text = std::get_if<std::string>( &value ) )
-    {
-        // H5T_C_S1 is null-terminated; size it and mark it UTF-8.
-        type = h5.open( H5Tcopy( H5T_C_S1 ), "H5Tcopy", H5Tclose, at );
-        h5.check( H5Tset_size( type, text->size() + 1 ), "H5Tset_size", at );
-        h5.check( H5Tset_cset( type, H5T_CSET_UTF8 ), "H5Tset_cset", at );
-        data = text->c_str();
-    }
-    const hid_t space =
-        h5.open( H5Screate( H5S_SCALAR ), "H5Screate", H5Sclose, at );
-    const hid_t attr =
-        h5.open( H5Acreate2( loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT ),
-                 "H5Acreate2", H5Aclose, at );
-    h5.check( H5Awrite( attr, type, data ), "H5Awrite", at );
-    h5.closeAll();
-}
-
-// Dataset [n] (1 component) or [n x components] with a "unit" attribute.
-void writeDataset( const std::string& file, const hid_t group,
-                   const std::string& path, const hid_t file_type,
-                   const hid_t mem_type, const hsize_t n, const int components,
-                   const void* data, const std::string& unit )
-{
-    Hdf5Ops h5( file );
-    const hsize_t dims[2] = { n, static_cast<hsize_t>( components ) };
-    const hid_t space =
-        h5.open( H5Screate_simple( components == 1 ? 1 : 2, dims, nullptr ),
-                 "H5Screate_simple", H5Sclose, path );
-    const hid_t dset =
-        h5.open( H5Dcreate2( group, path.c_str(), file_type, space, H5P_DEFAULT,
-                             H5P_DEFAULT, H5P_DEFAULT ),
-                 "H5Dcreate2", H5Dclose, path );
-    if ( n > 0 )
-        h5.check(
-            H5Dwrite( dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data ),
-            "H5Dwrite", path );
-    writeAttribute( file, dset, path, "unit", unit );
-    h5.closeAll();
+    names.clear();
+    h5.check( H5Literate( group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect,
+                          &names ),
+              "H5Literate", object );
+    return names;
 }
 
 //---------------------------------------------------------------------------//
@@ -271,10 +170,71 @@ SnapshotWriter::SnapshotWriter( const std::string& out_dir,
                                 const std::string& stem )
     : _stem( stem )
 {
+    preparePaths( out_dir );
+    createFile();
+}
+
+//---------------------------------------------------------------------------//
+SnapshotWriter::SnapshotWriter( const std::string& out_dir,
+                                const std::string& stem,
+                                const std::string& keep_from,
+                                const SnapshotSeriesMark& keep )
+    : _stem( stem )
+{
     namespace fs = std::filesystem;
-    if ( stem.empty() || stem.find( '/' ) != std::string::npos )
+    preparePaths( out_dir );
+    // The interrupted run's own .partial would be truncated by createFile():
+    // move it aside and copy from there.
+    std::string source = keep_from;
+    std::error_code ec;
+    const bool own_partial =
+        keep.count > 0 && fs::equivalent( keep_from, _partial_path, ec );
+    if ( own_partial )
+    {
+        source = _partial_path + ".resume";
+        if ( std::rename( _partial_path.c_str(), source.c_str() ) != 0 )
+        {
+            const int error_number = errno;
+            throw std::runtime_error(
+                "mpm::SnapshotWriter: rename '" + _partial_path + "' -> '" +
+                source + "' failed: " + std::strerror( error_number ) );
+        }
+    }
+    try
+    {
+        createFile();
+    }
+    catch ( ... )
+    {
+        if ( own_partial )
+            std::rename( source.c_str(), _partial_path.c_str() );
+        throw;
+    }
+    try
+    {
+        if ( keep.count > 0 )
+            copySnapshots( source, keep.count );
+    }
+    catch ( ... )
+    {
+        H5Fclose( _file_id );
+        std::remove( _partial_path.c_str() );
+        if ( own_partial )
+            std::rename( source.c_str(), _partial_path.c_str() );
+        _finalized = true;
+        throw;
+    }
+    if ( own_partial )
+        std::remove( source.c_str() );
+}
+
+//---------------------------------------------------------------------------//
+void SnapshotWriter::preparePaths( const std::string& out_dir )
+{
+    namespace fs = std::filesystem;
+    if ( _stem.empty() || _stem.find( '/' ) != std::string::npos )
         throw std::invalid_argument( "mpm::SnapshotWriter: invalid stem '" +
-                                     stem + "'" );
+                                     _stem + "'" );
 
     // Create the output folder.
     std::error_code ec;
@@ -283,21 +243,24 @@ SnapshotWriter::SnapshotWriter( const std::string& out_dir,
         throw std::runtime_error(
             "mpm::SnapshotWriter: cannot create output folder '" + out_dir +
             "': " + ( ec ? ec.message() : "not a folder" ) );
-    _h5_path = ( fs::path( out_dir ) / ( stem + ".h5" ) ).string();
+    _h5_path = ( fs::path( out_dir ) / ( _stem + ".h5" ) ).string();
     _partial_path = _h5_path + ".partial";
-    _xdmf_path = ( fs::path( out_dir ) / ( stem + ".xdmf" ) ).string();
+    _xdmf_path = ( fs::path( out_dir ) / ( _stem + ".xdmf" ) ).string();
+}
 
+//---------------------------------------------------------------------------//
+void SnapshotWriter::createFile()
+{
     // Create the file with its root attributes and /snapshots.
-    Hdf5Ops h5( _partial_path );
+    Hdf5Ops h5( who, _partial_path );
     _file_id = h5.check( H5Fcreate( _partial_path.c_str(), H5F_ACC_TRUNC,
                                     H5P_DEFAULT, H5P_DEFAULT ),
                          "H5Fcreate", "/" );
     try
     {
-        writeAttribute( _partial_path, _file_id, "/", "format",
-                        std::string( "rainslide-particles-1" ) );
-        writeAttribute( _partial_path, _file_id, "/", "snapshot_count",
-                        std::int64_t( 0 ) );
+        h5.writeAttribute( _file_id, "/", "format",
+                           std::string( "rainslide-particles-1" ) );
+        h5.writeAttribute( _file_id, "/", "snapshot_count", std::int64_t( 0 ) );
         h5.open( H5Gcreate2( _file_id, "snapshots", H5P_DEFAULT, H5P_DEFAULT,
                              H5P_DEFAULT ),
                  "H5Gcreate2", H5Gclose, "/snapshots" );
@@ -310,6 +273,139 @@ SnapshotWriter::SnapshotWriter( const std::string& out_dir,
         std::remove( _partial_path.c_str() );
         throw;
     }
+}
+
+//---------------------------------------------------------------------------//
+void SnapshotWriter::copySnapshots( const std::string& source,
+                                    const long count )
+{
+    Hdf5Ops in( who, source );
+    const hid_t src =
+        in.open( H5Fopen( source.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT ),
+                 "H5Fopen", H5Fclose, "/" );
+    long n_max = 0;
+    for ( long s = 0; s < count; ++s )
+    {
+        const std::string g = "/snapshots/" + snapshotName( s );
+        in.check( H5Ocopy( src, g.c_str(), _file_id, g.c_str(), H5P_DEFAULT,
+                           H5P_DEFAULT ),
+                  "H5Ocopy", g );
+        Hdf5Ops h5( who, source );
+        const hid_t group = h5.open( H5Gopen2( src, g.c_str(), H5P_DEFAULT ),
+                                     "H5Gopen2", H5Gclose, g );
+        const auto integer = [&]( const char* name )
+        {
+            return static_cast<long>(
+                std::get<std::int64_t>( h5.readAttribute( group, g, name ) ) );
+        };
+        SnapshotRecord record{
+            std::get<double>( h5.readAttribute( group, g, "time_s" ) ),
+            std::get<std::string>( h5.readAttribute( group, g, "stage" ) ),
+            std::get<double>( h5.readAttribute( group, g, "stage_time_s" ) ),
+            integer( "step" ),
+            integer( "n_points" ),
+            {} };
+        for ( const std::string& name : fieldNames( h5, group, g ) )
+        {
+            const std::string path = g + "/" + name;
+            const auto dims = h5.datasetDims( src, path );
+            const hid_t dset =
+                h5.open( H5Dopen2( src, path.c_str(), H5P_DEFAULT ), "H5Dopen2",
+                         H5Dclose, path );
+            const hid_t type =
+                h5.open( H5Dget_type( dset ), "H5Dget_type", H5Tclose, path );
+            record.fields.push_back(
+                { name, dims.size() > 1 ? static_cast<int>( dims[1] ) : 1,
+                  H5Tget_class( type ) == H5T_INTEGER } );
+        }
+        h5.closeAll();
+        n_max = std::max( n_max, record.n_points );
+        _records.push_back( std::move( record ) );
+    }
+    in.closeAll();
+
+    writeVertexIds( n_max );
+    Hdf5Ops out( who, _partial_path );
+    const std::int64_t complete = count;
+    const hid_t attr =
+        out.open( H5Aopen( _file_id, "snapshot_count", H5P_DEFAULT ), "H5Aopen",
+                  H5Aclose, "/@snapshot_count" );
+    out.check( H5Awrite( attr, H5T_NATIVE_INT64, &complete ), "H5Awrite",
+               "/@snapshot_count" );
+    out.closeAll();
+    out.check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", "/" );
+}
+
+//---------------------------------------------------------------------------//
+std::string
+SnapshotWriter::findSeries( const std::vector<std::string>& candidates,
+                            const SnapshotSeriesMark& keep )
+{
+    if ( keep.count <= 0 )
+        return "";
+    const std::string last = "/snapshots/" + snapshotName( keep.count - 1 );
+    std::string reasons;
+    for ( const std::string& path : candidates )
+    {
+        std::string reason;
+        if ( !std::filesystem::exists( path ) )
+            reason = "does not exist";
+        else
+            try
+            {
+                Hdf5Ops h5( who, path );
+                const hid_t file = h5.open(
+                    H5Fopen( path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT ),
+                    "H5Fopen", H5Fclose, "/" );
+                const auto complete = std::get<std::int64_t>(
+                    h5.readAttribute( file, "/", "snapshot_count" ) );
+                if ( complete < keep.count )
+                    reason = "holds " + std::to_string( complete ) +
+                             " complete snapshot(s), fewer than " +
+                             std::to_string( keep.count );
+                else
+                {
+                    const hid_t group =
+                        h5.open( H5Gopen2( file, last.c_str(), H5P_DEFAULT ),
+                                 "H5Gopen2", H5Gclose, last );
+                    const auto step = std::get<std::int64_t>(
+                        h5.readAttribute( group, last, "step" ) );
+                    const double time_s = std::get<double>(
+                        h5.readAttribute( group, last, "time_s" ) );
+                    if ( step != keep.last_step || time_s != keep.last_time_s )
+                        reason = "its snapshot " + last + " is step " +
+                                 std::to_string( step ) +
+                                 " at t = " + formatDouble( time_s ) +
+                                 " s (another run of the case?)";
+                }
+                h5.closeAll();
+            }
+            catch ( const std::exception& e )
+            {
+                reason = e.what();
+            }
+        if ( reason.empty() )
+            return path;
+        reasons += "\n  " + path + ": " + reason;
+    }
+    throw std::runtime_error(
+        "no snapshot file holds the " + std::to_string( keep.count ) +
+        " snapshot(s) written before the checkpoint (the last at step " +
+        std::to_string( keep.last_step ) +
+        ", t = " + formatDouble( keep.last_time_s ) + " s):" + reasons );
+}
+
+//---------------------------------------------------------------------------//
+SnapshotSeriesMark SnapshotWriter::mark() const
+{
+    SnapshotSeriesMark m;
+    m.count = static_cast<long>( _records.size() );
+    if ( !_records.empty() )
+    {
+        m.last_step = _records.back().step;
+        m.last_time_s = _records.back().time_s;
+    }
+    return m;
 }
 
 //---------------------------------------------------------------------------//
@@ -338,28 +434,33 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
                                 _partial_path + "' was already finalized" );
     checkFields( n_points, fields, int_fields );
 
-    Hdf5Ops h5( _partial_path );
-    const std::string& file = _partial_path;
+    Hdf5Ops h5( who, _partial_path );
     const std::string g = "/snapshots/" + snapshotName( _records.size() );
     const auto n = static_cast<hsize_t>( n_points );
     try
     {
         // Group, its attributes and one dataset per field.
-        const hid_t group =
-            h5.open( H5Gcreate2( _file_id, g.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                 H5P_DEFAULT ),
-                     "H5Gcreate2", H5Gclose, g );
-        writeAttribute( file, group, g, "time_s", time_s );
-        writeAttribute( file, group, g, "stage", stage );
-        writeAttribute( file, group, g, "stage_time_s", stage_time_s );
-        writeAttribute( file, group, g, "step", std::int64_t( step ) );
-        writeAttribute( file, group, g, "n_points", std::int64_t( n_points ) );
+        // Track the fields' creation order (kept when a restart copies it).
+        const hid_t gcpl =
+            h5.open( H5Pcreate( H5P_GROUP_CREATE ), "H5Pcreate", H5Pclose, g );
+        h5.check( H5Pset_link_creation_order( gcpl, H5P_CRT_ORDER_TRACKED |
+                                                        H5P_CRT_ORDER_INDEXED ),
+                  "H5Pset_link_creation_order", g );
+        const hid_t group = h5.open(
+            H5Gcreate2( _file_id, g.c_str(), H5P_DEFAULT, gcpl, H5P_DEFAULT ),
+            "H5Gcreate2", H5Gclose, g );
+        h5.writeAttribute( group, g, "time_s", time_s );
+        h5.writeAttribute( group, g, "stage", stage );
+        h5.writeAttribute( group, g, "stage_time_s", stage_time_s );
+        h5.writeAttribute( group, g, "step", std::int64_t( step ) );
+        h5.writeAttribute( group, g, "n_points", std::int64_t( n_points ) );
         for ( const auto& f : fields )
-            writeDataset( file, group, g + "/" + f.name, H5T_IEEE_F64LE,
-                          H5T_NATIVE_DOUBLE, n, f.components, f.data, f.unit );
+            h5.writeDataset( group, g + "/" + f.name, H5T_IEEE_F64LE,
+                             H5T_NATIVE_DOUBLE, fieldDims( n, f.components ),
+                             f.data, f.unit );
         for ( const auto& f : int_fields )
-            writeDataset( file, group, g + "/" + f.name, H5T_STD_I32LE,
-                          H5T_NATIVE_INT, n, 1, f.data, "1" );
+            h5.writeDataset( group, g + "/" + f.name, H5T_STD_I32LE,
+                             H5T_NATIVE_INT, { n }, f.data, "1" );
         h5.closeAll();
         writeVertexIds( n_points );
 
@@ -396,14 +497,15 @@ void SnapshotWriter::writeVertexIds( const long n_points )
     if ( n_points <= _vertex_id_count )
         return;
     if ( _vertex_id_count > 0 )
-        Hdf5Ops( _partial_path )
+        Hdf5Ops( who, _partial_path )
             .check( H5Ldelete( _file_id, "/vertex_ids", H5P_DEFAULT ),
                     "H5Ldelete", "/vertex_ids" );
     _vertex_id_count = 0;
     std::vector<int> ids( n_points );
     std::iota( ids.begin(), ids.end(), 0 );
-    writeDataset( _partial_path, _file_id, "/vertex_ids", H5T_STD_I32LE,
-                  H5T_NATIVE_INT, ids.size(), 1, ids.data(), "1" );
+    Hdf5Ops( who, _partial_path )
+        .writeDataset( _file_id, "/vertex_ids", H5T_STD_I32LE, H5T_NATIVE_INT,
+                       { ids.size() }, ids.data(), "1" );
     _vertex_id_count = n_points;
 }
 
@@ -415,7 +517,8 @@ void SnapshotWriter::finalize()
     _finalized = true;
 
     // Close the file, then publish it under its final name.
-    Hdf5Ops( _partial_path ).check( H5Fclose( _file_id ), "H5Fclose", "/" );
+    Hdf5Ops( who, _partial_path )
+        .check( H5Fclose( _file_id ), "H5Fclose", "/" );
     if ( std::rename( _partial_path.c_str(), _h5_path.c_str() ) != 0 )
     {
         const int error_number = errno;

@@ -33,6 +33,21 @@ struct IntFieldRef
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Where a snapshot series stands: how many complete snapshots it
+  holds and the step and time of the last one (count 0: none). A restarted
+  run keeps the first `count` snapshots of the interrupted run's file, and
+  checks with the step and time that the file is the series its checkpoint
+  refers to.
+*/
+struct SnapshotSeriesMark
+{
+    long count = 0;
+    long last_step = -1;
+    double last_time_s = 0.0;
+};
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Crash-safe particle snapshot output (HDF5 + XDMF) that ParaView
   opens as a time series.
 
@@ -64,6 +79,13 @@ struct IntFieldRef
   with ParaView 5.11. A snapshot with 0 points reads as an empty grid
   (the legacy XDMF reader also logs an error for it).
 
+  A restarted run continues a series: the constructor given `keep_from`
+  copies the first `keep.count` snapshots of that file (an interrupted
+  run's `<stem>.h5` or `<stem>.h5.partial`, see findSeries) into the new
+  `.h5.partial`, so the finished file holds the whole run once, without
+  the interrupted run's snapshots after its checkpoint. Each snapshot group
+  tracks link creation order, so copied snapshots keep their field order.
+
   Errors throw std::runtime_error naming the file, the object and the HDF5
   operation; invalid arguments throw std::invalid_argument.
 */
@@ -76,6 +98,27 @@ class SnapshotWriter
     */
     SnapshotWriter( const std::string& out_dir,
                     const std::string& stem = "particles" );
+
+    /*!
+      \brief As above, then copies the first `keep.count` snapshots of the
+      file `keep_from` (which must match `keep`, see findSeries). If
+      `keep_from` is this writer's own `.h5.partial`, it is moved aside to
+      `.h5.partial.resume` first and removed once copied.
+    */
+    SnapshotWriter( const std::string& out_dir, const std::string& stem,
+                    const std::string& keep_from,
+                    const SnapshotSeriesMark& keep );
+
+    /*!
+      \brief The first of `candidates` (paths of snapshot files, e.g. an
+      interrupted run's `.h5.partial` then its `.h5`) that is readable, holds
+      at least `keep.count` complete snapshots and whose snapshot
+      `keep.count - 1` has `keep`'s step and time. Throws std::runtime_error
+      saying why each candidate was refused. keep.count = 0 needs no file
+      and returns "".
+    */
+    static std::string findSeries( const std::vector<std::string>& candidates,
+                                   const SnapshotSeriesMark& keep );
 
     //! \brief Calls finalize() if needed; never throws.
     ~SnapshotWriter();
@@ -118,6 +161,9 @@ class SnapshotWriter
     //! \brief Number of snapshots written so far.
     int snapshotCount() const { return static_cast<int>( _records.size() ); }
 
+    //! \brief Count, step and time of the snapshots written so far.
+    SnapshotSeriesMark mark() const;
+
   private:
     // What finalize() needs to describe one snapshot in the XDMF file.
     struct FieldRecord
@@ -136,6 +182,9 @@ class SnapshotWriter
         std::vector<FieldRecord> fields;
     };
 
+    void preparePaths( const std::string& out_dir );
+    void createFile();
+    void copySnapshots( const std::string& source, long count );
     void writeVertexIds( long n_points );
     std::string buildXdmf() const;
 

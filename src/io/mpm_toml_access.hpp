@@ -122,7 +122,7 @@ class TableReader
             else
                 text += "; the keys allowed in " + where + " are " +
                         quotedList( known );
-            _diag.error( key.source().begin, text );
+            _diag.error( key.source(), text );
         }
     }
 
@@ -131,7 +131,7 @@ class TableReader
     {
         if ( _suggested.count( key ) )
             return;
-        _diag.error( _table.source().begin,
+        _diag.error( _table.source(),
                      "key '" + keyPath( key ) +
                          "': required key is missing; expected " + expected );
     }

@@ -18,6 +18,14 @@ struct RetentionState
     double k_rel;
 };
 
+//! Degree of saturation and dS/dp_w (1/Pa) only: what the pore-pressure
+//! Newton iteration needs.
+struct SaturationState
+{
+    double S;
+    double dS_dp;
+};
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Soil-water retention S(p_w) and relative permeability k_rel(S).
@@ -46,6 +54,35 @@ struct Retention
             return linear( r, p_w );
         default:
             return RetentionState{ 1.0, 0.0, 1.0 };
+        }
+    }
+
+    /*!
+      \brief S (-) and dS/dp_w (1/Pa) at p_w (Pa), the same values as
+      operator() without the cost of k_rel (van Genuchten: an expm1 and a
+      sqrt; Liakopoulos: an exp).
+    */
+    KOKKOS_INLINE_FUNCTION SaturationState
+    saturationState( const RetentionParams& r, const double p_w ) const
+    {
+        switch ( r.model )
+        {
+        case RetentionModel::VanGenuchten:
+            return vanGenuchtenSaturation( r, p_w ).state;
+        case RetentionModel::Liakopoulos:
+            return liakopoulosSaturation( r, p_w ).state;
+        case RetentionModel::Gardner:
+        {
+            const RetentionState g = gardner( r, p_w );
+            return SaturationState{ g.S, g.dS_dp };
+        }
+        case RetentionModel::Linear:
+        {
+            const RetentionState l = linear( r, p_w );
+            return SaturationState{ l.S, l.dS_dp };
+        }
+        default:
+            return SaturationState{ 1.0, 0.0 };
         }
     }
 
@@ -140,19 +177,45 @@ struct Retention
     vanGenuchten( const RetentionParams& r, const double p_w ) const
     {
         namespace KE = Kokkos::Experimental;
+        const VanGenuchtenSaturation v = vanGenuchtenSaturation( r, p_w );
+        if ( v.saturated )
+            return RetentionState{ r.s_sat, 0.0, 1.0 };
+        const double t = -KE::expm1( -v.m * v.d );
+        const double k_rel = KE::sqrt( v.s_e ) * t * t;
+        return RetentionState{ v.state.S, v.state.dS_dp,
+                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+    }
+
+    //! S and dS/dp_w of van Genuchten and the terms k_rel needs.
+    struct VanGenuchtenSaturation
+    {
+        SaturationState state;
+        bool saturated; //!< s = 0: S = s_sat, k_rel = 1
+        double s_e;     //!< effective saturation
+        double m;       //!< 1 - 1/n
+        double d;       //!< VanGenuchtenTerms::d
+    };
+
+    //! \brief S, dS/dp_w and the k_rel terms of vanGenuchten at p_w (Pa).
+    KOKKOS_INLINE_FUNCTION VanGenuchtenSaturation
+    vanGenuchtenSaturation( const RetentionParams& r, const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
         const double s = p_w < 0.0 ? -p_w : 0.0;
         const double x = r.alpha_per_pa * s;
         if ( !( x > 0.0 ) )
-            return RetentionState{ r.s_sat, 0.0, 1.0 };
+            return VanGenuchtenSaturation{
+                { r.s_sat, 0.0 }, true, 1.0, 0.0, 0.0 };
         const double m = 1.0 - 1.0 / r.n_vg;
         const VanGenuchtenTerms v = vanGenuchtenTerms( r.n_vg, x );
         const double s_e = KE::exp( -m * v.log_a );
         const double width = r.s_sat - r.s_res;
-        const double t = -KE::expm1( -m * v.d );
-        const double k_rel = KE::sqrt( s_e ) * t * t;
-        return RetentionState{ r.s_res + width * s_e,
-                               width * ( r.n_vg - 1.0 ) * s_e * v.q / s,
-                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+        return VanGenuchtenSaturation{
+            { r.s_res + width * s_e, width * ( r.n_vg - 1.0 ) * s_e * v.q / s },
+            false,
+            s_e,
+            m,
+            v.d };
     }
 
     //! log(A), d = log(1 + x^-n) = -log(x^n / A) and q = x^n / A, A = 1 + x^n.
@@ -194,8 +257,30 @@ struct Retention
                                                        const double p_w ) const
     {
         namespace KE = Kokkos::Experimental;
-        if ( !( p_w < 0.0 ) )
+        const LiakopoulosSaturation l = liakopoulosSaturation( r, p_w );
+        if ( l.saturated )
             return RetentionState{ 1.0, 0.0, 1.0 };
+        const double k_rel =
+            1.0 - 2.207 * KE::exp( 1.0121 * l.log_one_minus_s );
+        return RetentionState{ l.state.S, l.state.dS_dp,
+                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+    }
+
+    //! S and dS/dp_w of liakopoulos and the term k_rel needs.
+    struct LiakopoulosSaturation
+    {
+        SaturationState state;
+        bool saturated;         //!< p_w >= 0: S = 1, k_rel = 1
+        double log_one_minus_s; //!< log(1 - S)
+    };
+
+    //! \brief S, dS/dp_w and log(1 - S) of liakopoulos at p_w (Pa).
+    KOKKOS_INLINE_FUNCTION LiakopoulosSaturation
+    liakopoulosSaturation( const RetentionParams& r, const double p_w ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        if ( !( p_w < 0.0 ) )
+            return LiakopoulosSaturation{ { 1.0, 0.0 }, true, 0.0 };
         constexpr double log_a = -24.64928635201841; // log(1.9722e-11)
         constexpr double b = 2.4279;
         const double s = -p_w;
@@ -211,9 +296,7 @@ struct Retention
             log_one_minus_s = KE::log( 1.0 - r.s_res );
             dS_dp = 0.0;
         }
-        const double k_rel = 1.0 - 2.207 * KE::exp( 1.0121 * log_one_minus_s );
-        return RetentionState{ S, dS_dp,
-                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+        return LiakopoulosSaturation{ { S, dS_dp }, false, log_one_minus_s };
     }
 
     /*!

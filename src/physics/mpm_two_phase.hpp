@@ -2,6 +2,7 @@
 #define MPM_TWO_PHASE_HPP
 
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_retention.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
@@ -103,13 +104,16 @@ KOKKOS_INLINE_FUNCTION double nodalDrag( const double nS,
   formulation.md step 6): solves for dp
     n (S(p + dp) - S(p)) + n S dp / K_w = -dt (n S div v_w + (1 - n) S div v_s)
   by Newton iterations safeguarded by bisection (the left side is monotone
-  in dp). `retention(p)` returns the retention state at pressure p.
+  in dp). `retention(p)` returns the saturation state (S, dS/dp_w) at
+  pressure p. `state_at_p_w`, if not null, is retention(p_w), known from
+  the last update (it saves the first evaluation, same result).
 */
 template <class RetentionFunction>
 KOKKOS_INLINE_FUNCTION double
 porePressureIncrement( const RetentionFunction& retention, const double p_w,
                        const double S, const double n,
-                       const double bulk_modulus, const double volume_change )
+                       const double bulk_modulus, const double volume_change,
+                       const SaturationState* state_at_p_w = nullptr )
 {
     namespace KE = Kokkos::Experimental;
     // volume_change = -dt (n S div v_w + (1 - n) S div v_s), dimensionless.
@@ -120,7 +124,9 @@ porePressureIncrement( const RetentionFunction& retention, const double p_w,
     double dp = 0.0;
     for ( int iter = 0; iter < 50; ++iter )
     {
-        const auto state = retention( p_w + dp );
+        const SaturationState state = ( iter == 0 && state_at_p_w )
+                                          ? *state_at_p_w
+                                          : retention( p_w + dp );
         const double g = n * ( state.S - S ) + storage * dp - volume_change;
         if ( g > 0.0 )
             hi = dp;

@@ -70,6 +70,18 @@ std::vector<bool> selectPoints( const PointSelection& selection,
 }
 
 //---------------------------------------------------------------------------//
+double horizontalExtent( const std::vector<bool>& picked,
+                         const std::vector<double>& x, const GridConfig& grid )
+{
+    std::set<int> columns;
+    for ( std::size_t p = 0; p < picked.size(); ++p )
+        if ( picked[p] )
+            columns.insert( static_cast<int>( std::floor(
+                ( x[2 * p] - grid.origin_m[0] ) / grid.cell_size_m ) ) );
+    return static_cast<double>( columns.size() ) * grid.cell_size_m;
+}
+
+//---------------------------------------------------------------------------//
 std::vector<int> waterNodeFlags( const GridConfig& grid,
                                  const std::vector<BoundaryConfig>& boundaries )
 {

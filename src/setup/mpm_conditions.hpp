@@ -20,6 +20,11 @@ std::vector<bool> selectPoints( const PointSelection& selection,
                                 const std::vector<int>& status,
                                 const GridConfig& grid );
 
+//! Horizontal extent of the picked points' cells: the number of grid
+//! columns holding a picked point times the cell size, m.
+double horizontalExtent( const std::vector<bool>& picked,
+                         const std::vector<double>& x, const GridConfig& grid );
+
 //! Water tie flags (NodeFlag bits) of every node, flat index i * (ny + 1) + j:
 //! grid edges are impermeable (normal water velocity = solid's) unless a
 //! boundary drains them; an impermeable below_polyline boundary ties both.

@@ -23,6 +23,28 @@ void installInterruptHandler()
 
 bool interruptRequested() { return interrupt_flag.load(); }
 
+void printResumeHint( const std::string& case_file,
+                      const std::string& run_options,
+                      const std::string& checkpoint_file,
+                      const long checkpoint_step,
+                      const double checkpoint_time_s )
+{
+    if ( checkpoint_step < 0 )
+    {
+        std::fprintf( stderr,
+                      "rainslide: interrupted; no checkpoint could be written "
+                      "(see the warning above)\n" );
+        return;
+    }
+    std::fprintf( stderr,
+                  "rainslide: interrupted; checkpoint at step %ld (t = %.6g s) "
+                  "in %s\n"
+                  "  continue with: rainslide run %s --restart %s %s\n",
+                  checkpoint_step, checkpoint_time_s, checkpoint_file.c_str(),
+                  case_file.c_str(), checkpoint_file.c_str(),
+                  run_options.c_str() );
+}
+
 //---------------------------------------------------------------------------//
 ProgressPrinter::ProgressPrinter( const std::string& case_name,
                                   const int num_points, const bool enabled,
@@ -39,10 +61,12 @@ ProgressPrinter::ProgressPrinter( const std::string& case_name,
 
 void ProgressPrinter::update( const RunProgress& progress )
 {
-    if ( progress.stage_step == 1 )
+    if ( progress.stage_step == 1 || !_has_baseline )
     {
+        _has_baseline = true;
         _stage_start = clock::now();
         _stage_start_step = progress.step - 1;
+        _stage_start_time_s = progress.stage_time_s - progress.dt_s;
     }
     const auto now = clock::now();
     if ( !_enabled ||
@@ -53,9 +77,12 @@ void ProgressPrinter::update( const RunProgress& progress )
     const double wall = std::chrono::duration<double>( now - _start ).count();
     const double stage_wall =
         std::chrono::duration<double>( now - _stage_start ).count();
-    const double fraction = progress.stage_time_s / progress.stage_duration_s;
+    const double done_s = progress.stage_time_s - _stage_start_time_s;
     const double eta =
-        fraction > 0.0 ? stage_wall * ( 1.0 - fraction ) / fraction : 0.0;
+        done_s > 0.0
+            ? stage_wall *
+                  ( progress.stage_duration_s - progress.stage_time_s ) / done_s
+            : 0.0;
     const double rate = stage_wall > 0.0
                             ? double( progress.step - _stage_start_step ) *
                                   progress.active_points / stage_wall

@@ -38,14 +38,29 @@ class ProgressPrinter
     clock::time_point _start;
     clock::time_point _last_print;
     clock::time_point _stage_start;
+    // Where the rate and ETA of the stage are measured from: the stage
+    // start, or the first step of a restarted run.
+    bool _has_baseline = false;
     long _stage_start_step = 0;
+    double _stage_start_time_s = 0.0;
 };
 
 //! Appends one snapshot of every particle field to the writer.
 void writeSnapshot( SnapshotWriter& writer, const RunProgress& progress,
                     const HostSnapshot& snapshot );
 
-//! SIGINT/SIGTERM set a flag (the run stops cleanly between steps).
+/*!
+  \brief After an interrupted run: where the checkpoint is and the command
+  that continues the run with the options `run_options` (or, if
+  checkpoint_step < 0, that none was written).
+*/
+void printResumeHint( const std::string& case_file,
+                      const std::string& run_options,
+                      const std::string& checkpoint_file, long checkpoint_step,
+                      double checkpoint_time_s );
+
+//! SIGINT/SIGTERM set a flag (the run stops cleanly between steps, after
+//! writing a checkpoint).
 void installInterruptHandler();
 bool interruptRequested();
 

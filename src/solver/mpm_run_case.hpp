@@ -2,8 +2,11 @@
 #define MPM_RUN_CASE_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <io/mpm_checkpoint.hpp>
 #include <io/mpm_json_output.hpp>
+#include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_snapshot_writer.hpp>
+#include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_metrics.hpp>
 #include <solver/mpm_progress.hpp>
 #include <solver/mpm_run_stages.hpp>
@@ -11,7 +14,12 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace mpm
@@ -23,6 +31,13 @@ struct RunOptions
     std::string backend;
     int threads = 1;
     bool progress = true; //!< progress lines on stderr
+    //! Checkpoint to continue from; "" starts a new run.
+    std::string restart_file;
+    //! Overrides solver.checkpoint_interval_s when >= 0.
+    double checkpoint_interval_s = -1.0;
+    //! Stop as if interrupted after this many steps of this session (0:
+    //! never); for splitting a run into sessions and for tests.
+    long stop_after_steps = 0;
 };
 
 //! Exit status of a run.
@@ -33,18 +48,42 @@ enum class RunStatus
     Failed
 };
 
+//! A restart that cannot proceed (unreadable checkpoint, another case,
+//! missing earlier snapshots); nothing was written.
+class RestartError : public std::runtime_error
+{
+  public:
+    explicit RestartError( const std::string& message )
+        : std::runtime_error( message )
+    {
+    }
+};
+
 //---------------------------------------------------------------------------//
-//! Writes snapshots to HDF5/XDMF and progress lines to stderr.
+/*!
+  \brief Writes snapshots to HDF5/XDMF, checkpoints to
+  `<out>/checkpoint.h5` and progress lines to stderr; stops the run on
+  SIGINT/SIGTERM or after `stop_after_steps` steps.
+*/
 class OutputObserver : public RunObserver
 {
   public:
-    OutputObserver( SnapshotWriter& writer, ProgressPrinter& printer )
+    using clock = std::chrono::steady_clock;
+
+    OutputObserver( SnapshotWriter& writer, ProgressPrinter& printer,
+                    const std::string& checkpoint_path,
+                    const double wall_before_s, const long stop_after_steps )
         : _writer( writer )
         , _printer( printer )
+        , _checkpoint_path( checkpoint_path )
+        , _wall_before_s( wall_before_s )
+        , _stop_after_steps( stop_after_steps )
+        , _start( clock::now() )
     {
     }
     void onStep( const RunProgress& progress ) override
     {
+        ++_steps;
         _printer.update( progress );
     }
     void onSnapshot( const RunProgress& progress,
@@ -58,33 +97,164 @@ class OutputObserver : public RunObserver
     {
         _printer.stageEnd( progress, summary );
     }
-    bool stopRequested() override { return interruptRequested(); }
+    bool stopRequested() override
+    {
+        return interruptRequested() ||
+               ( _stop_after_steps > 0 && _steps >= _stop_after_steps );
+    }
+    //! Writes the checkpoint; a failure is reported and the run goes on
+    //! (the previous checkpoint stays valid).
+    void onCheckpoint( Checkpoint& checkpoint ) override
+    {
+        checkpoint.snapshots = _writer.mark();
+        checkpoint.wall_s = wallSeconds();
+        try
+        {
+            const auto start = clock::now();
+            writeCheckpoint( _checkpoint_path, checkpoint );
+            const double write_s =
+                std::chrono::duration<double>( clock::now() - start ).count();
+            checkpoint_write_s_total += write_s;
+            checkpoint_write_s_max =
+                std::max( checkpoint_write_s_max, write_s );
+            last_checkpoint_step = checkpoint.step;
+            last_checkpoint_time_s = checkpoint.time_s;
+            ++checkpoints_written;
+        }
+        catch ( const std::exception& error )
+        {
+            checkpoint_error = error.what();
+            std::cerr << "rainslide: warning: checkpoint not written: "
+                      << error.what() << "\n";
+        }
+    }
+    double nextSampleTime() const override
+    {
+        return probes ? probes->nextTime() : 1.0e300;
+    }
+    void onSample( const RunProgress& progress,
+                   const HostSnapshot& snapshot ) override
+    {
+        if ( probes )
+            probes->record( progress, snapshot );
+    }
+    //! Wall time of the whole run: earlier sessions plus this one.
+    double wallSeconds() const
+    {
+        return _wall_before_s +
+               std::chrono::duration<double>( clock::now() - _start ).count();
+    }
 
     HostSnapshot last_snapshot;
+    ProbeRecorder* probes = nullptr; //!< tracked points, if the case has any
+    int checkpoints_written = 0;
+    double checkpoint_write_s_total = 0.0; //!< wall time writing them
+    double checkpoint_write_s_max = 0.0;
+    long last_checkpoint_step = -1;
+    double last_checkpoint_time_s = 0.0;
+    std::string checkpoint_error;
 
   private:
     SnapshotWriter& _writer;
     ProgressPrinter& _printer;
+    std::string _checkpoint_path;
+    double _wall_before_s;
+    long _stop_after_steps;
+    long _steps = 0;
+    clock::time_point _start;
 };
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Reads the checkpoint `options.restart_file`, refuses it if it was
+  written for another case (RestartError naming both files and what
+  differs), and puts `sim` into its state. The snapshots written before
+  it are found next to it (see SnapshotWriter::findSeries).
+*/
+template <class ExecSpace>
+Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
+                                 const CaseConfig& config,
+                                 const RunOptions& options,
+                                 std::string& earlier_snapshots )
+{
+    Checkpoint checkpoint;
+    try
+    {
+        checkpoint = readCheckpoint( options.restart_file );
+    }
+    catch ( const std::exception& error )
+    {
+        throw RestartError( "cannot read checkpoint '" + options.restart_file +
+                            "': " + error.what() );
+    }
+    const std::string mismatch = checkpointMismatch(
+        checkpoint, options.restart_file, checkpointIdentity( config, sim ) );
+    if ( !mismatch.empty() )
+        throw RestartError( mismatch );
+    if ( checkpoint.identity.backend != ExecSpace::name() )
+        std::cerr << "rainslide: note: the checkpoint was written on "
+                  << checkpoint.identity.backend << ", this run uses "
+                  << ExecSpace::name()
+                  << ": the results continue the run but are not bitwise "
+                     "those of an uninterrupted run\n";
+    const auto folder =
+        std::filesystem::path( options.restart_file ).parent_path();
+    const std::string stem = ( folder / "particles.h5" ).string();
+    try
+    {
+        earlier_snapshots = SnapshotWriter::findSeries(
+            { stem + ".partial", stem }, checkpoint.snapshots );
+    }
+    catch ( const std::exception& error )
+    {
+        throw RestartError( "cannot restart from checkpoint '" +
+                            options.restart_file + "': " + error.what() );
+    }
+    restoreCheckpoint( sim, config, checkpoint );
+    return checkpoint;
+}
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Runs a validated case on ExecSpace: snapshots to
-  `<out>/particles.h5` + `.xdmf`, metrics to `<out>/metrics.json`.
+  `<out>/particles.h5` + `.xdmf`, metrics to `<out>/metrics.json`,
+  checkpoints to `<out>/checkpoint.h5` (every
+  solver.checkpoint_interval_s and on SIGINT/SIGTERM).
+  With options.restart_file the run continues that checkpoint: the
+  particle file holds the snapshots before it and those after it, the
+  metrics cover the whole run (steps, simulated time, wall time summed
+  over the sessions).
   An unstable run stops with a diagnosis on stderr; what was written stays
   readable. Returns the run status.
 */
 template <class ExecSpace>
-RunStatus runCase( const CaseConfig& config, const RunOptions& options )
+RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
 {
     const auto wall_start = std::chrono::steady_clock::now();
+    CaseConfig config = case_config;
+    if ( options.checkpoint_interval_s >= 0.0 )
+        config.solver.checkpoint_interval_s = options.checkpoint_interval_s;
     Simulation<ExecSpace> sim( config );
+    // Probe points are picked from the initial state, also on a restart.
+    ProbeRecorder probes( config, hostSnapshot( sim ), options.out_dir );
+    std::optional<Checkpoint> resumed;
+    std::string earlier_snapshots;
+    if ( !options.restart_file.empty() )
+        resumed =
+            resumeFromCheckpoint( sim, config, options, earlier_snapshots );
     // Refuse a fixed time step above the stable limit before writing anything.
     chooseTimeStep( sim.solver, sim.waveSpeedLimit() );
-    SnapshotWriter writer( options.out_dir );
+    SnapshotWriter writer( options.out_dir, "particles", earlier_snapshots,
+                           resumed ? resumed->snapshots
+                                   : SnapshotSeriesMark() );
     ProgressPrinter printer( config.name, sim.particles.size(),
                              options.progress );
-    OutputObserver observer( writer, printer );
+    const std::string checkpoint_file = checkpointPath( options.out_dir );
+    OutputObserver observer( writer, printer, checkpoint_file,
+                             resumed ? resumed->wall_s : 0.0,
+                             options.stop_after_steps );
+    observer.probes = &probes;
+    probes.open( resumed ? resumed->time_s : -1.0 );
     installInterruptHandler();
 
     nlohmann::json metrics = {
@@ -101,7 +271,8 @@ RunStatus runCase( const CaseConfig& config, const RunOptions& options )
     RunSummary summary;
     try
     {
-        summary = runStages( sim, config, observer );
+        summary = runStages( sim, config, observer,
+                             resumed ? resumed->loop : StageLoopState() );
         if ( summary.interrupted )
             status = RunStatus::Interrupted;
     }
@@ -119,10 +290,13 @@ RunStatus runCase( const CaseConfig& config, const RunOptions& options )
         at_failure.time_s = sim.time;
         writeSnapshot( writer, at_failure, hostSnapshot( sim ) );
     }
-    const double wall_s = std::chrono::duration<double>(
-                              std::chrono::steady_clock::now() - wall_start )
-                              .count();
+    const double session_wall_s =
+        std::chrono::duration<double>( std::chrono::steady_clock::now() -
+                                       wall_start )
+            .count();
+    const double wall_s = ( resumed ? resumed->wall_s : 0.0 ) + session_wall_s;
     writer.finalize();
+    probes.finish();
     printer.finish();
 
     const long steps = sim.step;
@@ -161,8 +335,36 @@ RunStatus runCase( const CaseConfig& config, const RunOptions& options )
     metrics["output"] = { { "hdf5", writer.h5Path() },
                           { "xdmf", writer.xdmfPath() },
                           { "snapshots", writer.snapshotCount() } };
+    metrics["checkpoint"] = {
+        { "file", checkpoint_file },
+        { "interval_s", config.solver.checkpoint_interval_s },
+        { "written_this_session", observer.checkpoints_written },
+        { "write_s_total", observer.checkpoint_write_s_total },
+        { "write_s_max", observer.checkpoint_write_s_max },
+        { "last_step", observer.last_checkpoint_step },
+        { "last_time_s", observer.last_checkpoint_time_s } };
+    if ( !observer.checkpoint_error.empty() )
+        metrics["checkpoint"]["error"] = observer.checkpoint_error;
+    if ( resumed )
+        metrics["restart"] = { { "from", options.restart_file },
+                               { "step", resumed->step },
+                               { "time_s", resumed->time_s },
+                               { "wall_s_before", resumed->wall_s },
+                               { "wall_s_this_session", session_wall_s },
+                               { "snapshots_kept", resumed->snapshots.count } };
     writeJsonAtomically( options.out_dir + "/metrics.json", metrics );
     printer.summary( metrics );
+    if ( status == RunStatus::Interrupted )
+        printResumeHint(
+            config.file,
+            "--backend " + options.backend +
+                ( options.backend == "openmp"
+                      ? " --threads " +
+                            std::to_string( ExecSpace::concurrency() )
+                      : "" ) +
+                " --out " + options.out_dir,
+            checkpoint_file, observer.last_checkpoint_step,
+            observer.last_checkpoint_time_s );
     return status;
 }
 

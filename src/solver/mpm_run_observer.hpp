@@ -6,6 +6,8 @@
 
 namespace mpm
 {
+struct Checkpoint; // io/mpm_checkpoint.hpp
+
 //! Where a run stands; passed to observers.
 struct RunProgress
 {
@@ -54,10 +56,20 @@ class RunObserver
     virtual void onStep( const RunProgress& ) {}
     //! Called when the case asks for a snapshot.
     virtual void onSnapshot( const RunProgress&, const HostSnapshot& ) {}
+    //! Run time at which the observer wants its next sample (e.g. probe
+    //! records); onSample is called after the first step that reaches it.
+    virtual double nextSampleTime() const { return 1.0e300; }
+    //! Called with the state at a sample time.
+    virtual void onSample( const RunProgress&, const HostSnapshot& ) {}
     //! Called at the end of each stage.
     virtual void onStageEnd( const RunProgress&, const StageSummary& ) {}
-    //! Polled between steps; returning true stops the run cleanly.
+    //! Polled between steps; returning true stops the run cleanly (after
+    //! onCheckpoint with the state at the stop).
     virtual bool stopRequested() { return false; }
+    //! Called with the whole run state when a checkpoint is due (every
+    //! solver.checkpoint_interval_s and at a stop). Writing it is up to the
+    //! observer, which completes the outputs' part first (snapshots, wall_s).
+    virtual void onCheckpoint( Checkpoint& ) {}
 };
 
 } // namespace mpm

@@ -2,8 +2,10 @@
 #define MPM_RUN_STAGES_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
+#include <solver/mpm_stage_state.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -14,16 +16,6 @@
 
 namespace mpm
 {
-//! Outcome of runStages.
-struct RunSummary
-{
-    std::vector<StageSummary> stages;
-    long steps = 0;
-    double dt_min_s = 0.0;
-    double dt_max_s = 0.0;
-    bool interrupted = false; //!< stopped by RunObserver::stopRequested
-};
-
 //---------------------------------------------------------------------------//
 //! Host copy of every particle field of a simulation.
 template <class ExecSpace>
@@ -163,59 +155,83 @@ inline double quasiStaticWindow( const CaseConfig& config,
 }
 
 //---------------------------------------------------------------------------//
+//! True if a periodic checkpoint is due at run time `time_s`.
+inline bool checkpointDue( const SolverConfig& solver,
+                           const StageLoopState& state, const double time_s )
+{
+    return solver.checkpoint_interval_s > 0.0 &&
+           time_s >= state.next_checkpoint_s * ( 1.0 - 1.0e-12 );
+}
+
+//---------------------------------------------------------------------------//
 /*!
   \brief Runs every stage of `config` on `sim`: quasi-static stages until
   E_kin / max E_kin stays below the tolerance for quasiStaticWindow (or
   their duration), dynamic stages for their duration. Snapshots at the requested
   interval and at stage ends.
+
+  The loop starts from `state`: a fresh StageLoopState for a new run, or
+  Checkpoint::loop (with `sim` restored by restoreCheckpoint) to continue
+  an interrupted one. Checkpoints go to observer.onCheckpoint every
+  solver.checkpoint_interval_s of run time and when stopRequested() stops
+  the run; both are taken before a step, the only point a run resumes at.
 */
 template <class ExecSpace>
 RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
-                      RunObserver& observer )
+                      RunObserver& observer,
+                      StageLoopState state = StageLoopState() )
 {
-    RunSummary summary;
-    summary.dt_min_s = 1.0e300;
     // Quasi-static stages check convergence only after this many steps.
     const long min_quasi_static_steps = 20;
+    if ( state.next_checkpoint_s <= 0.0 )
+        state.next_checkpoint_s = config.solver.checkpoint_interval_s;
+    state.run.interrupted = false;
+    RunSummary& summary = state.run;
+    RunProgress& progress = state.progress;
+    StageSummary& stage_summary = state.stage_summary;
 
-    for ( std::size_t s = 0; s < config.stages.size(); ++s )
+    for ( ; state.stage < config.stages.size(); ++state.stage )
     {
-        const StageConfig& stage = config.stages[s];
-        sim.applyStage( stage );
+        const StageConfig& stage = config.stages[state.stage];
         const bool quasi_static = stage.type == StageType::QuasiStatic;
+        const SnapshotSchedule schedule( stage );
+        if ( !state.stage_started )
+        {
+            sim.applyStage( stage );
+            state.beginStage( state.stage, stage.name, stage.duration_s,
+                              quasi_static, schedule.next( 0.0 ) );
+        }
         const StepSettings settings{ stage.gravity_m_per_s2[0],
                                      stage.gravity_m_per_s2[1], stage.damping };
-
-        StageSummary stage_summary;
-        stage_summary.name = stage.name;
-        stage_summary.type = quasi_static ? "quasi_static" : "dynamic";
-        stage_summary.dt_min_s = 1.0e300;
-        stage_summary.converged = !quasi_static;
-
-        RunProgress progress;
-        progress.stage = stage.name;
-        progress.stage_index = static_cast<int>( s );
-        progress.stage_duration_s = stage.duration_s;
-        double ke_max = 0.0;
         const double window_s =
             quasi_static ? quasiStaticWindow( config, stage ) : 0.0;
-        double below_since = -1.0; // stage time the ratio went below tol
-        const SnapshotSchedule schedule( stage );
-        double next_snapshot = schedule.next( 0.0 );
         const double end_tolerance = 1.0e-12 * stage.duration_s;
 
         while ( progress.stage_time_s < stage.duration_s - end_tolerance )
         {
             if ( observer.stopRequested() )
             {
+                Checkpoint checkpoint = captureCheckpoint( sim, config, state );
+                observer.onCheckpoint( checkpoint );
                 summary.interrupted = true;
                 break;
+            }
+            if ( checkpointDue( config.solver, state, sim.time ) )
+            {
+                const double interval = config.solver.checkpoint_interval_s;
+                state.next_checkpoint_s =
+                    interval *
+                    ( std::floor( sim.time / interval * ( 1.0 + 1.0e-12 ) ) +
+                      1.0 );
+                Checkpoint checkpoint = captureCheckpoint( sim, config, state );
+                observer.onCheckpoint( checkpoint );
             }
             const WaveSpeedLimit limit = sim.waveSpeedLimit();
             double dt = chooseTimeStep( sim.solver, limit );
             // Land exactly on the stage end and on snapshot times.
-            dt = std::min( dt, std::min( stage.duration_s, next_snapshot ) -
-                                   progress.stage_time_s );
+            dt = std::min( dt,
+                           std::min( stage.duration_s, state.next_snapshot_s ) -
+                               progress.stage_time_s );
             sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
 
@@ -224,31 +240,36 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             progress.time_s = sim.time;
             progress.stage_time_s += dt;
             progress.dt_s = dt;
-            progress.kinetic_energy_j =
-                kineticEnergy( ExecSpace(), sim.particles );
+            progress.kinetic_energy_j = sim.kineticEnergy();
             progress.active_points = sim.numActivePoints();
             stage_summary.dt_min_s = std::min( stage_summary.dt_min_s, dt );
             stage_summary.dt_max_s = std::max( stage_summary.dt_max_s, dt );
             observer.onStep( progress );
+            if ( progress.time_s >= observer.nextSampleTime() )
+                observer.onSample( progress, hostSnapshot( sim ) );
 
-            if ( progress.stage_time_s >= next_snapshot - end_tolerance )
+            if ( progress.stage_time_s >=
+                 state.next_snapshot_s - end_tolerance )
             {
                 observer.onSnapshot( progress, hostSnapshot( sim ) );
-                next_snapshot = schedule.next( progress.stage_time_s );
+                state.next_snapshot_s = schedule.next( progress.stage_time_s );
             }
 
             if ( quasi_static )
             {
-                ke_max = std::max( ke_max, progress.kinetic_energy_j );
+                state.ke_max =
+                    std::max( state.ke_max, progress.kinetic_energy_j );
                 stage_summary.ke_ratio =
-                    ke_max > 0.0 ? progress.kinetic_energy_j / ke_max : 0.0;
+                    state.ke_max > 0.0
+                        ? progress.kinetic_energy_j / state.ke_max
+                        : 0.0;
                 if ( stage_summary.ke_ratio >= stage.ke_ratio_tolerance )
-                    below_since = -1.0;
-                else if ( below_since < 0.0 )
-                    below_since = progress.stage_time_s;
+                    state.below_since = -1.0;
+                else if ( state.below_since < 0.0 )
+                    state.below_since = progress.stage_time_s;
                 if ( progress.stage_step >= min_quasi_static_steps &&
-                     below_since >= 0.0 &&
-                     progress.stage_time_s - below_since >= window_s )
+                     state.below_since >= 0.0 &&
+                     progress.stage_time_s - state.below_since >= window_s )
                 {
                     stage_summary.converged = true;
                     break;
@@ -259,13 +280,14 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         stage_summary.steps = progress.stage_step;
         stage_summary.duration_s = progress.stage_time_s;
         observer.onSnapshot( progress, hostSnapshot( sim ) );
-        if ( stage.reset_displacement )
+        if ( stage.reset_displacement && !summary.interrupted )
             sim.resetDisplacement();
         observer.onStageEnd( progress, stage_summary );
         summary.steps += stage_summary.steps;
         summary.dt_min_s = std::min( summary.dt_min_s, stage_summary.dt_min_s );
         summary.dt_max_s = std::max( summary.dt_max_s, stage_summary.dt_max_s );
         summary.stages.push_back( stage_summary );
+        state.stage_started = false;
         if ( summary.interrupted )
             break;
     }

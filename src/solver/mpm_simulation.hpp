@@ -10,9 +10,8 @@
 #include <mpm_p2g.hpp>
 #include <mpm_p2g_two_phase.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_point_update.hpp>
 #include <mpm_pore_pressure.hpp>
-#include <mpm_position_update.hpp>
-#include <mpm_stress_update.hpp>
 #include <mpm_timestep.hpp>
 #include <mpm_velocity_gradient.hpp>
 #include <mpm_water_views.hpp>
@@ -41,6 +40,15 @@ struct StepSettings
   \brief The state of one simulation (points, grid, materials) and the
   explicit MUSL step, dry (single phase) or two-phase (solid + water,
   formulation.md). Water fields exist only in two-phase scenes.
+
+  The step keeps its grid sums (GridScatter) between steps and touches
+  only the nodes and cells of the points. Its last point loop also
+  evaluates the CFL limit, the kinetic energy and the stability of the new
+  state (StepDiagnostics): waveSpeedLimit, kineticEnergy and
+  checkStability use them until the state changes (the next step or
+  applyStage), so the time loop runs no reduction of its own. Code that
+  writes point fields directly between steps must call
+  stateChanged() afterwards.
 */
 template <class ExecSpace>
 class Simulation
@@ -76,11 +84,22 @@ class Simulation
                                    ": no material point lies inside any body "
                                    "polygon; check bodies[].polygon_m" );
         particles = ParticleViews<ExecSpace>( points.size() );
+        const int num_nodes = grid.geometry.numNodes();
         if ( twoPhase() )
         {
             water_particles = WaterParticleViews<ExecSpace>( points.size() );
             water_grid = WaterGridViews<ExecSpace>( grid.geometry );
+            _two_phase_sums =
+                TwoPhaseNodeSums<ExecSpace>( "p2g_two_phase", num_nodes );
+            _two_phase_momentum =
+                TwoPhaseMomentumSums<ExecSpace>( "remap_two_phase", num_nodes );
         }
+        else
+        {
+            _dry_sums = DryNodeSums<ExecSpace>( "p2g_dry", num_nodes );
+            _dry_momentum = MomentumSums<ExecSpace>( "remap_dry", num_nodes );
+        }
+
         initialiseParticles( config, points, particles, water_particles,
                              water );
         if ( !config.stages.empty() )
@@ -92,6 +111,7 @@ class Simulation
     //! Materials, boundary flags and point conditions of a stage.
     void applyStage( const StageConfig& stage )
     {
+        stateChanged();
         materials = makeMaterialTable( stage.materials );
         copyNodeFlags( nodeFlags( grid_config, stage.boundaries ),
                        grid.flags_i );
@@ -106,11 +126,13 @@ class Simulation
     WaveSpeedLimit waveSpeedLimit() const
     {
         WaveSpeedLimit limit =
-            twoPhase() ? criticalTimeStepTwoPhase( ExecSpace(), particles,
-                                                   water_particles, materials,
-                                                   water, grid.geometry.h )
-                       : criticalTimeStep( ExecSpace(), particles, materials,
-                                           grid.geometry.h );
+            diagnosticsCurrent() ? WaveSpeedLimit{ _diagnostics.dt_limit,
+                                                   _diagnostics.max_wave_speed }
+            : twoPhase() ? criticalTimeStepTwoPhase( ExecSpace(), particles,
+                                                     water_particles, materials,
+                                                     water, grid.geometry.h )
+                         : criticalTimeStep( ExecSpace(), particles, materials,
+                                             grid.geometry.h );
         const double root_f = std::sqrt( solver.inertia_scaling );
         limit.dt_limit *= root_f;
         limit.max_wave_speed /= root_f;
@@ -126,21 +148,19 @@ class Simulation
                   const double stage_time_s = 0.0 )
     {
         conditions.update( stage_time_s + dt );
-        if ( twoPhase() )
-            advanceTwoPhase( dt, settings );
-        else
-            advanceDry( dt, settings );
-        int removed = 0;
-        const int outside =
-            updatePositions( ExecSpace(), particles, grid.geometry,
-                             solver.remove_points_leaving_grid, removed );
-        num_removed += removed;
+        const PointUpdateReport report = twoPhase()
+                                             ? advanceTwoPhase( dt, settings )
+                                             : advanceDry( dt, settings );
+        num_removed += report.num_removed;
         time += dt;
         ++step;
-        if ( outside >= 0 )
+        _diagnostics = report.diagnostics;
+        _diagnostics_step = step;
+        if ( report.first_outside >= 0 )
             throw SimulationError( describe(
-                outside, "left the grid (set solver.remove_points_leaving_grid "
-                         "= true to remove such points instead)" ) );
+                report.first_outside,
+                "left the grid (set solver.remove_points_leaving_grid "
+                "= true to remove such points instead)" ) );
     }
 
     //! Throws SimulationError naming the first unstable point, if any.
@@ -148,6 +168,11 @@ class Simulation
     {
         const double speed_limit =
             solver.instability_speed_factor * limit.max_wave_speed;
+        // The step's diagnostics clear the usual, stable state at no cost.
+        if ( diagnosticsCurrent() &&
+             _diagnostics.first_unsound >= particles.size() &&
+             !( _diagnostics.max_speed2 > speed_limit * speed_limit ) )
+            return;
         const int bad = findUnstablePoint( ExecSpace(), particles,
                                            water_particles, speed_limit );
         if ( bad < 0 )
@@ -161,6 +186,25 @@ class Simulation
                << limit.dt_limit << " s (largest wave speed "
                << limit.max_wave_speed << " m/s)";
         throw SimulationError( describe( bad, reason.str() ) );
+    }
+
+    //! Total kinetic energy of the points, J (kineticEnergy).
+    double kineticEnergy() const
+    {
+        return diagnosticsCurrent()
+                   ? _diagnostics.kinetic_energy
+                   : mpm::kineticEnergy( ExecSpace(), particles );
+    }
+
+    /*!
+      \brief Declares the point state changed outside advance (fields
+      written directly): the step's diagnostics and the stored retention
+      state are no longer trusted.
+    */
+    void stateChanged()
+    {
+        _diagnostics_step = -1;
+        _retention_current = false;
     }
 
     //! Sets the reference positions to the current ones (x0 = x).
@@ -179,53 +223,71 @@ class Simulation
     }
 
   private:
-    //! Single phase: P2G, grid update, G2P, remap, gradient, stress.
-    void advanceDry( const double dt, const StepSettings& settings )
+    //! True if _diagnostics describe the current state.
+    bool diagnosticsCurrent() const { return _diagnostics_step == step; }
+
+    //! B-bar: the cell averages of the step's velocity gradients.
+    void cellAverages( const ExecSpace& exec )
+    {
+        if ( !_cell_sums.allocated() )
+            _cell_sums = CellSums<ExecSpace>(
+                "bbar_cells", grid.geometry.nx * grid.geometry.ny );
+        velocityGradientCellSums( exec, particles, water_particles, grid,
+                                  water_grid, water.density, _cell_sums );
+        takeCellSums( exec, grid, water_grid, _cell_sums );
+    }
+
+    //! Single phase: P2G, grid update, G2P with the remap scatter, remap,
+    //! (B-bar cell averages,) gradient, stress and positions.
+    PointUpdateReport advanceDry( const double dt,
+                                  const StepSettings& settings )
     {
         const ExecSpace exec;
-        p2gMassMomentumForce( exec, particles, grid, settings.gravity_x,
-                              settings.gravity_y, conditions.load_force );
-        findActiveNodes( exec, grid );
-        gridUpdateDry( exec, grid, dt, settings.damping,
+        scatterMassMomentumForce( exec, particles, grid.geometry,
+                                  settings.gravity_x, settings.gravity_y,
+                                  conditions.load_force, _dry_sums );
+        gridUpdateDry( exec, grid, _dry_sums, dt, settings.damping,
                        solver.inertia_scaling );
-        g2pVelocity( exec, particles, grid, dt, solver.flip_fraction );
-        p2gMomentum( exec, particles, grid );
-        remapVelocity( exec, grid );
-        velocityGradient( exec, particles, grid );
+        g2pVelocityRemap( exec, particles, grid, dt, solver.flip_fraction,
+                          _dry_momentum );
+        remapVelocity( exec, grid, _dry_momentum );
         if ( solver.bbar )
-            cellAverageVolumetricRate( exec, particles, grid );
-        stressUpdate( exec, particles, materials, dt );
+            cellAverages( exec );
+        return updatePointsDry( exec, particles, grid, materials, dt,
+                                solver.bbar,
+                                solver.remove_points_leaving_grid );
     }
 
     //! Two phases, formulation.md steps 1-9 (drag implicit at the nodes).
-    void advanceTwoPhase( const double dt, const StepSettings& settings )
+    PointUpdateReport advanceTwoPhase( const double dt,
+                                       const StepSettings& settings )
     {
         const ExecSpace exec;
-        p2gTwoPhase( exec, particles, water_particles, grid, water_grid,
-                     materials, water, settings.gravity_x, settings.gravity_y,
-                     conditions.load_force );
-        findActiveNodes( exec, grid );
-        gridUpdateTwoPhase( exec, grid, water_grid, dt, settings.damping,
-                            water.density, water.viscosity,
+        scatterTwoPhase( exec, particles, water_particles, grid.geometry,
+                         materials, water, settings.gravity_x,
+                         settings.gravity_y, conditions.load_force,
+                         _two_phase_sums );
+        gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
+                            settings.damping, water.density, water.viscosity,
                             solver.inertia_scaling );
-        g2pVelocityTwoPhase( exec, particles, water_particles, grid, water_grid,
-                             dt, solver.flip_fraction );
-        p2gMomentumTwoPhase( exec, particles, water_particles, grid, water_grid,
-                             water.density );
-        remapVelocityTwoPhase( exec, grid, water_grid );
-        velocityGradientTwoPhase( exec, particles, water_particles, grid,
-                                  water_grid, water.density );
+        g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
+                                  water_grid, dt, solver.flip_fraction,
+                                  water.density, _two_phase_momentum );
+        remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum );
         if ( solver.bbar )
-        {
-            cellAverageVolumetricRate( exec, particles, grid );
-            cellAverageWaterDivergence( exec, particles, water_particles, grid,
-                                        water_grid );
-        }
-        porePressureUpdate( exec, particles, water_particles, materials, water,
-                            dt, analysis == AnalysisType::Saturated,
-                            conditions.prescribed_p_w, conditions.inflow_rate,
-                            conditions.inflow_ponding );
-        stressUpdate( exec, particles, materials, dt );
+            cellAverages( exec );
+        const bool saturated = analysis == AnalysisType::Saturated;
+        const auto pore_pressure = porePressurePointUpdate(
+            water_particles, water, dt, saturated, _retention_current,
+            conditions.prescribed_p_w, conditions.inflow_rate,
+            conditions.inflow_ponding );
+        const PointUpdateReport report = updatePointsTwoPhase(
+            exec, particles, water_particles, grid, water_grid, materials,
+            water, dt, solver.bbar, solver.remove_points_leaving_grid,
+            pore_pressure );
+        // S_p and dS_dp_p now hold the retention law at p_w_p.
+        _retention_current = !saturated;
+        return report;
     }
 
     void copyNodeFlags( const std::vector<int>& flags,
@@ -238,6 +300,18 @@ class Simulation
                 flags_h( i, j ) = flags[i * ny1 + j];
         Kokkos::deep_copy( view, flags_h );
     }
+
+    // Grid sums kept between steps (empty if the scene does not need them).
+    DryNodeSums<ExecSpace> _dry_sums;
+    MomentumSums<ExecSpace> _dry_momentum;
+    TwoPhaseNodeSums<ExecSpace> _two_phase_sums;
+    TwoPhaseMomentumSums<ExecSpace> _two_phase_momentum;
+    CellSums<ExecSpace> _cell_sums;
+    //! Diagnostics of the state after step _diagnostics_step (-1: none).
+    StepDiagnostics _diagnostics{ 0.0, 0.0, 0.0, 0.0, 0 };
+    long _diagnostics_step = -1;
+    //! True if S_p, dS_dp_p are the retention law's values at p_w_p.
+    bool _retention_current = false;
 };
 
 } // namespace mpm

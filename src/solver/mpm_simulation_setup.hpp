@@ -134,6 +134,9 @@ struct StageConditions
     Kokkos::View<int*, device_type> inflow_ponding{ "inflow_ponding", 0 };
     std::vector<WaterInflow> inflows;
     std::vector<double> inflow_volumes; //!< volume of the points fed, m^3/m
+    //! Stage time of the next surface re-detection of the inflows that
+    //! follow the surface (1e300 if none does).
+    double next_surface_update_s = 1.0e300;
     std::vector<PorePressureCondition> pore_pressures;
     std::vector<PointLoad> loads;
     std::vector<int> load_counts;              //!< points per load
@@ -202,22 +205,27 @@ struct StageConditions
                         condition_h( p ) = static_cast<int>( c );
             }
             Kokkos::deep_copy( wv.p_w_condition_p, condition_h );
-            applyInflows( stage, pv, wv, x, status, grid );
+            inflows = stage.inflows;
+            _particles = pv;
+            _water_particles = wv;
+            _grid = grid;
+            assignInflows( x, status );
+            next_surface_update_s = _follow_interval_s;
         }
         update( 0.0 );
     }
 
-    //! Which points each water inflow feeds, and their volumes.
-    void applyInflows( const StageConfig& stage,
-                       const ParticleViews<ExecSpace>& pv,
-                       const WaterParticleViews<ExecSpace>& wv,
-                       const std::vector<double>& x,
-                       const std::vector<int>& status, const GridConfig& grid )
+    /*!
+      \brief Which points each water inflow feeds, and their volumes, from
+      the positions x and status; an inflow that follows the surface gets
+      the horizontal projection of the fed cells as its length.
+    */
+    void assignInflows( const std::vector<double>& x,
+                        const std::vector<int>& status )
     {
-        inflows = stage.inflows;
         const auto vol_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), pv.vol_p );
-        auto inflow_h = Kokkos::create_mirror( wv.inflow_p );
+            Kokkos::HostSpace(), _particles.vol_p );
+        auto inflow_h = Kokkos::create_mirror( _water_particles.inflow_p );
         Kokkos::deep_copy( inflow_h, -1 );
         inflow_volumes.assign( inflows.size(), 0.0 );
         inflow_rate =
@@ -225,10 +233,11 @@ struct StageConditions
         inflow_ponding =
             Kokkos::View<int*, device_type>( "inflow_ponding", inflows.size() );
         auto ponding_h = Kokkos::create_mirror_view( inflow_ponding );
+        double follow_interval = 1.0e300;
         for ( std::size_t f = 0; f < inflows.size(); ++f )
         {
             const auto picked =
-                selectPoints( inflows[f].points, x, status, grid );
+                selectPoints( inflows[f].points, x, status, _grid );
             for ( std::size_t p = 0; p < picked.size(); ++p )
                 if ( picked[p] )
                 {
@@ -236,14 +245,37 @@ struct StageConditions
                     inflow_volumes[f] += vol_h( p );
                 }
             ponding_h( f ) = inflows[f].ponding ? 1 : 0;
+            if ( inflows[f].follow_surface_interval_s > 0.0 )
+            {
+                inflows[f].length_m = horizontalExtent( picked, x, _grid );
+                follow_interval = std::min(
+                    follow_interval, inflows[f].follow_surface_interval_s );
+            }
         }
         Kokkos::deep_copy( inflow_ponding, ponding_h );
-        Kokkos::deep_copy( wv.inflow_p, inflow_h );
+        Kokkos::deep_copy( _water_particles.inflow_p, inflow_h );
+        _follow_interval_s = follow_interval;
+    }
+
+    //! Re-detects the surface for the inflows that follow it (stage time t).
+    void followSurface( const double t )
+    {
+        const auto x_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), _particles.x_p );
+        const auto status_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), _particles.status_p );
+        assignInflows(
+            std::vector<double>( x_h.data(), x_h.data() + x_h.span() ),
+            std::vector<int>( status_h.data(),
+                              status_h.data() + status_h.span() ) );
+        next_surface_update_s = t + _follow_interval_s;
     }
 
     //! Values of every condition at stage time t.
     void update( const double t )
     {
+        if ( t >= next_surface_update_s )
+            followSurface( t );
         auto p_h = Kokkos::create_mirror_view( prescribed_p_w );
         for ( std::size_t c = 0; c < pore_pressures.size(); ++c )
             p_h( c ) =
@@ -276,6 +308,13 @@ struct StageConditions
                     : 0.0;
         Kokkos::deep_copy( inflow_rate, rate_h );
     }
+
+  private:
+    // Handles of the points the inflows follow (shallow copies).
+    ParticleViews<ExecSpace> _particles;
+    WaterParticleViews<ExecSpace> _water_particles;
+    GridConfig _grid;
+    double _follow_interval_s = 1.0e300;
 };
 
 } // namespace mpm

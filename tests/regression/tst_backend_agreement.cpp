@@ -25,9 +25,9 @@ mpm::HostSnapshot runShortSlope( const mpm::CaseConfig& config )
 //---------------------------------------------------------------------------//
 // A complete short run of the dry slope (Mohr–Coulomb, softening, yielding)
 // on this backend agrees with Serial within a relative 1e-10.
-TYPED_TEST( BackendAgreement, dry_slope_matches_serial )
+TYPED_TEST( BackendAgreement, total_stress_slope_matches_serial )
 {
-    auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/dry_slope.toml" );
+    auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_total_stress.toml" );
     config.stages[0].duration_s = 0.3;
     config.stages[0].snapshot_interval_s = 0.0;
     const auto serial = runShortSlope<Kokkos::Serial>( config );

@@ -221,12 +221,12 @@ TEST( Cli, point_leaving_the_grid_is_an_error_or_removed )
 }
 
 //---------------------------------------------------------------------------//
-// The default case runs to completion.
-TEST( Cli, default_dry_slope_runs_to_completion )
+// The total-stress slope (the paper's Fig. 10) runs to completion.
+TEST( Cli, total_stress_slope_runs_to_completion )
 {
-    const fs::path dir = freshDir( "dry_slope" );
+    const fs::path dir = freshDir( "slope_total_stress" );
     const auto result = runCommand( "run " RAINSLIDE_CASES_DIR
-                                    "/dry_slope.toml --quiet --out " +
+                                    "/slope_total_stress.toml --quiet --out " +
                                     ( dir / "out" ).string() );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     std::ifstream in( dir / "out" / "metrics.json" );

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The whole slope study (docs/slope-study.md): runs every slope case into
+# results/<case>/, draws each case's figures and the summary across cases.
+#   scripts/slope_study.sh             all cases (the refined base case last)
+#   SLOPE_CASES="slope_base slope_phi30" scripts/slope_study.sh
+# Extra arguments go to every `rainslide run` (e.g. --threads 2).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+bootstrap
+build_release
+cd "$RAINSLIDE_ROOT"
+cases=${SLOPE_CASES:-"slope_total_stress slope_base slope_phi15 slope_phi30 slope_cr001 slope_cr5 slope_rain_surface slope_base_fine"}
+dirs=()
+for case in $cases; do
+    echo "== $case" >&2
+    "$RAINSLIDE_BIN" run "cases/$case.toml" --out "results/$case" --quiet "$@"
+    times=()
+    [ "$case" = slope_total_stress ] && times=(--times 0.5,2.0)
+    "$PYTHON" scripts/slope_figures.py "results/$case" "${times[@]}"
+    dirs+=("results/$case")
+done
+"$PYTHON" scripts/slope_summary.py "${dirs[@]}" --out results/slope_summary.png
+echo "summary: results/slope_summary.png" >&2

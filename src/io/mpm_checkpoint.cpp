@@ -1,0 +1,494 @@
+#include <io/mpm_case_fingerprint.hpp>
+#include <io/mpm_checkpoint.hpp>
+#include <io/mpm_hdf5.hpp>
+#include <mpm_config.hpp>
+
+#include <hdf5.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <type_traits>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace mpm
+{
+namespace
+{
+using Impl::AttributeValue;
+using Impl::Hdf5Ops;
+
+const char* const who = "mpm::Checkpoint";
+const char* const format_name = "rainslide-checkpoint-1";
+
+std::string groupName( const std::size_t index )
+{
+    char buffer[32];
+    std::snprintf( buffer, sizeof( buffer ), "%06zu", index );
+    return buffer;
+}
+
+//---------------------------------------------------------------------------//
+// Loop-state fields as attributes: double, string, or int64 for the
+// integer and bool fields.
+template <class T>
+AttributeValue toAttribute( const T& value )
+{
+    if constexpr ( std::is_same_v<T, double> || std::is_same_v<T, std::string> )
+        return value;
+    else
+        return static_cast<std::int64_t>( value );
+}
+
+template <class T>
+void fromAttribute( const AttributeValue& attribute, T& value,
+                    const std::string& file, const std::string& name )
+{
+    using Stored = std::conditional_t<std::is_same_v<T, double> ||
+                                          std::is_same_v<T, std::string>,
+                                      T, std::int64_t>;
+    const auto* stored = std::get_if<Stored>( &attribute );
+    if ( !stored )
+        throw std::runtime_error( "checkpoint '" + file + "': field '" + name +
+                                  "' has the wrong type" );
+    value = static_cast<T>( *stored );
+}
+
+//---------------------------------------------------------------------------//
+// Writes `data` as dataset `path` of `loc` (1D).
+template <class T>
+void writeVector( const Hdf5Ops& h5, const hid_t loc, const std::string& path,
+                  const std::vector<T>& data )
+{
+    if constexpr ( std::is_same_v<T, double> )
+        h5.writeDataset( loc, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                         { data.size() }, data.data(), "" );
+    else
+        h5.writeDataset( loc, path, H5T_STD_I32LE, H5T_NATIVE_INT,
+                         { data.size() }, data.data(), "" );
+}
+
+template <class T>
+std::vector<T> readVector( const Hdf5Ops& h5, const hid_t loc,
+                           const std::string& path )
+{
+    std::size_t count = 1;
+    for ( const hsize_t d : h5.datasetDims( loc, path ) )
+        count *= d;
+    std::vector<T> data( count );
+    hid_t type = H5T_NATIVE_INT;
+    if constexpr ( std::is_same_v<T, double> )
+        type = H5T_NATIVE_DOUBLE;
+    else if constexpr ( std::is_same_v<T, unsigned char> )
+        type = H5T_NATIVE_UCHAR;
+    h5.readDataset( loc, path, type, data.data() );
+    return data;
+}
+
+//! Names of the links in group `loc`, in name order.
+std::vector<std::string> linkNames( const Hdf5Ops& h5, const hid_t loc,
+                                    const std::string& object )
+{
+    std::vector<std::string> names;
+    const H5L_iterate_t collect = []( hid_t, const char* name,
+                                      const H5L_info_t*, void* out ) -> herr_t
+    {
+        static_cast<std::vector<std::string>*>( out )->push_back( name );
+        return 0;
+    };
+    h5.check(
+        H5Literate( loc, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names ),
+        "H5Literate", object );
+    return names;
+}
+
+//---------------------------------------------------------------------------//
+void writeLoop( const std::string& file, const hid_t root,
+                const StageLoopState& loop )
+{
+    Hdf5Ops h5( who, file );
+    const hid_t group = h5.open(
+        H5Gcreate2( root, "loop", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT ),
+        "H5Gcreate2", H5Gclose, "/loop" );
+    visitStageLoopState(
+        loop,
+        [&]( const std::string& name, const auto& value )
+        {
+            using T = std::decay_t<decltype( value )>;
+            if constexpr ( std::is_same_v<T, std::vector<StageSummary>> )
+            {
+                const std::string path = "/loop/" + name;
+                const hid_t stages =
+                    h5.open( H5Gcreate2( group, name.c_str(), H5P_DEFAULT,
+                                         H5P_DEFAULT, H5P_DEFAULT ),
+                             "H5Gcreate2", H5Gclose, path );
+                for ( std::size_t k = 0; k < value.size(); ++k )
+                {
+                    const std::string sub = path + "/" + groupName( k );
+                    const hid_t stage = h5.open(
+                        H5Gcreate2( stages, groupName( k ).c_str(), H5P_DEFAULT,
+                                    H5P_DEFAULT, H5P_DEFAULT ),
+                        "H5Gcreate2", H5Gclose, sub );
+                    visitStageSummary(
+                        value[k],
+                        [&]( const std::string& field, const auto& v ) {
+                            h5.writeAttribute( stage, sub, field.c_str(),
+                                               toAttribute( v ) );
+                        } );
+                }
+            }
+            else
+                h5.writeAttribute( group, "/loop", name.c_str(),
+                                   toAttribute( value ) );
+        } );
+    h5.closeAll();
+}
+
+void readLoop( const std::string& file, const hid_t root, StageLoopState& loop )
+{
+    Hdf5Ops h5( who, file );
+    const hid_t group = h5.open( H5Gopen2( root, "loop", H5P_DEFAULT ),
+                                 "H5Gopen2", H5Gclose, "/loop" );
+    // Reads attribute `name` of `loc` into `value`.
+    const auto read = [&]( const hid_t loc, const std::string& object,
+                           const std::string& name, auto& value )
+    {
+        if ( !h5.hasAttribute( loc, object, name.c_str() ) )
+            throw std::runtime_error(
+                "checkpoint '" + file + "': missing loop field '" + name +
+                "' in " + object +
+                " (written by another version of rainslide?)" );
+        fromAttribute( h5.readAttribute( loc, object, name.c_str() ), value,
+                       file, name );
+    };
+    visitStageLoopState(
+        loop,
+        [&]( const std::string& name, auto& value )
+        {
+            using T = std::decay_t<decltype( value )>;
+            if constexpr ( std::is_same_v<T, std::vector<StageSummary>> )
+            {
+                const std::string path = "/loop/" + name;
+                const hid_t stages =
+                    h5.open( H5Gopen2( group, name.c_str(), H5P_DEFAULT ),
+                             "H5Gopen2", H5Gclose, path );
+                value.resize( linkNames( h5, stages, path ).size() );
+                for ( std::size_t k = 0; k < value.size(); ++k )
+                {
+                    const std::string sub = path + "/" + groupName( k );
+                    const hid_t stage = h5.open(
+                        H5Gopen2( stages, groupName( k ).c_str(), H5P_DEFAULT ),
+                        "H5Gopen2", H5Gclose, sub );
+                    visitStageSummary( value[k],
+                                       [&]( const std::string& field, auto& v )
+                                       { read( stage, sub, field, v ); } );
+                }
+            }
+            else
+                read( group, "/loop", name, value );
+        } );
+    h5.closeAll();
+}
+
+//---------------------------------------------------------------------------//
+void writeArrays( const std::string& file, const hid_t root,
+                  const std::vector<CheckpointArray>& arrays )
+{
+    Hdf5Ops h5( who, file );
+    const hid_t lcpl = h5.open( H5Pcreate( H5P_LINK_CREATE ), "H5Pcreate",
+                                H5Pclose, "/state" );
+    h5.check( H5Pset_create_intermediate_group( lcpl, 1 ),
+              "H5Pset_create_intermediate_group", "/state" );
+    h5.open( H5Gcreate2( root, "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT ),
+             "H5Gcreate2", H5Gclose, "/state" );
+    for ( const CheckpointArray& a : arrays )
+    {
+        const std::string path = "/state/" + a.name;
+        const std::vector<hsize_t> dims( a.dims.begin(), a.dims.end() );
+        const hid_t space = h5.open(
+            H5Screate_simple( int( dims.size() ), dims.data(), nullptr ),
+            "H5Screate_simple", H5Sclose, path );
+        const hid_t dset =
+            h5.open( H5Dcreate2( root, path.c_str(),
+                                 a.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE,
+                                 space, lcpl, H5P_DEFAULT, H5P_DEFAULT ),
+                     "H5Dcreate2", H5Dclose, path );
+        const std::size_t count =
+            a.integer ? a.integers.size() : a.reals.size();
+        if ( count > 0 )
+            h5.check(
+                H5Dwrite( dset, a.integer ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE,
+                          H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                          a.integer
+                              ? static_cast<const void*>( a.integers.data() )
+                              : a.reals.data() ),
+                "H5Dwrite", path );
+    }
+    h5.closeAll();
+}
+
+std::vector<CheckpointArray> readArrays( const std::string& file,
+                                         const hid_t root )
+{
+    Hdf5Ops h5( who, file );
+    std::vector<CheckpointArray> arrays;
+    const hid_t state = h5.open( H5Gopen2( root, "state", H5P_DEFAULT ),
+                                 "H5Gopen2", H5Gclose, "/state" );
+    for ( const std::string& group_name : linkNames( h5, state, "/state" ) )
+    {
+        const std::string group_path = "/state/" + group_name;
+        const hid_t group =
+            h5.open( H5Gopen2( state, group_name.c_str(), H5P_DEFAULT ),
+                     "H5Gopen2", H5Gclose, group_path );
+        for ( const std::string& name : linkNames( h5, group, group_path ) )
+        {
+            const std::string path = group_path + "/" + name;
+            CheckpointArray a;
+            a.name = group_name + "/" + name;
+            for ( const hsize_t d : h5.datasetDims( root, path ) )
+                a.dims.push_back( d );
+            const hid_t dset =
+                h5.open( H5Dopen2( root, path.c_str(), H5P_DEFAULT ),
+                         "H5Dopen2", H5Dclose, path );
+            const hid_t type =
+                h5.open( H5Dget_type( dset ), "H5Dget_type", H5Tclose, path );
+            a.integer = H5Tget_class( type ) == H5T_INTEGER;
+            if ( a.integer )
+                a.integers = readVector<int>( h5, root, path );
+            else
+                a.reals = readVector<double>( h5, root, path );
+            arrays.push_back( std::move( a ) );
+        }
+    }
+    h5.closeAll();
+    return arrays;
+}
+
+//---------------------------------------------------------------------------//
+// Flushes a file (or folder) to disk; throws naming it.
+void syncToDisk( const std::string& path, const int flags )
+{
+    const int fd = ::open( path.c_str(), flags | O_CLOEXEC );
+    if ( fd < 0 || ::fsync( fd ) != 0 )
+    {
+        const int error_number = errno;
+        if ( fd >= 0 )
+            ::close( fd );
+        throw std::runtime_error(
+            "mpm::writeCheckpoint: fsync of '" + path +
+            "' failed: " + std::strerror( error_number ) );
+    }
+    ::close( fd );
+}
+
+// Writes the whole checkpoint to a new file `path`.
+void writeFile( const std::string& path, const Checkpoint& c )
+{
+    Hdf5Ops h5( who, path );
+    const hid_t file = h5.open(
+        H5Fcreate( path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT ),
+        "H5Fcreate", H5Fclose, "/" );
+    const CheckpointIdentity& id = c.identity;
+    const std::vector<std::pair<const char*, AttributeValue>> attributes = {
+        { "format", std::string( format_name ) },
+        { "rainslide_version", std::string( RAINSLIDE_VERSION ) },
+        { "case_name", id.case_name },
+        { "case_file", id.case_file },
+        { "case_hash", hashText( fnv1aHash( id.case_fingerprint ) ) },
+        { "analysis", id.analysis },
+        { "n_points", std::int64_t( id.num_points ) },
+        { "backend", id.backend },
+        { "threads", std::int64_t( id.threads ) },
+        { "time_s", c.time_s },
+        { "step", std::int64_t( c.step ) },
+        { "num_removed", std::int64_t( c.num_removed ) },
+        { "grid_num_active", std::int64_t( c.grid_num_active ) },
+        { "wall_s", c.wall_s },
+        { "snapshot_count", std::int64_t( c.snapshots.count ) },
+        { "last_snapshot_step", std::int64_t( c.snapshots.last_step ) },
+        { "last_snapshot_time_s", c.snapshots.last_time_s } };
+    for ( const auto& [name, value] : attributes )
+        h5.writeAttribute( file, "/", name, value );
+    const std::string& text = id.case_fingerprint;
+    h5.writeDataset( file, "case_fingerprint", H5T_STD_U8LE, H5T_NATIVE_UCHAR,
+                     { text.size() }, text.data(), "" );
+
+    writeArrays( path, file, c.arrays );
+
+    const hid_t conditions = h5.open(
+        H5Gcreate2( file, "conditions", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT ),
+        "H5Gcreate2", H5Gclose, "/conditions" );
+    std::vector<int> sizes, members;
+    for ( const auto& group : c.load_groups )
+    {
+        sizes.push_back( static_cast<int>( group.size() ) );
+        members.insert( members.end(), group.begin(), group.end() );
+    }
+    writeVector( h5, conditions, "load_counts", c.load_counts );
+    writeVector( h5, conditions, "load_group_sizes", sizes );
+    writeVector( h5, conditions, "load_group_members", members );
+    writeVector( h5, conditions, "inflow_volumes", c.inflow_volumes );
+    writeVector( h5, conditions, "inflow_lengths_m", c.inflow_lengths_m );
+    h5.writeAttribute( conditions, "/conditions", "next_surface_update_s",
+                       c.next_surface_update_s );
+
+    writeLoop( path, file, c.loop );
+    h5.closeAll();
+}
+
+} // namespace
+
+//---------------------------------------------------------------------------//
+const CheckpointArray* Checkpoint::find( const std::string& name ) const
+{
+    for ( const CheckpointArray& a : arrays )
+        if ( a.name == name )
+            return &a;
+    return nullptr;
+}
+
+std::string checkpointPath( const std::string& out_dir )
+{
+    return ( std::filesystem::path( out_dir ) / "checkpoint.h5" ).string();
+}
+
+//---------------------------------------------------------------------------//
+void writeCheckpoint( const std::string& path, const Checkpoint& checkpoint )
+{
+    const std::string partial = path + ".partial";
+    try
+    {
+        writeFile( partial, checkpoint );
+        syncToDisk( partial, O_RDONLY );
+    }
+    catch ( ... )
+    {
+        std::remove( partial.c_str() );
+        throw;
+    }
+    if ( std::rename( partial.c_str(), path.c_str() ) != 0 )
+    {
+        const int error_number = errno;
+        std::remove( partial.c_str() );
+        throw std::runtime_error(
+            "mpm::writeCheckpoint: rename '" + partial + "' -> '" + path +
+            "' failed: " + std::strerror( error_number ) );
+    }
+    // Make the rename itself durable.
+    const auto folder = std::filesystem::path( path ).parent_path();
+    syncToDisk( folder.empty() ? "." : folder.string(),
+                O_RDONLY | O_DIRECTORY );
+}
+
+//---------------------------------------------------------------------------//
+Checkpoint readCheckpoint( const std::string& path )
+{
+    if ( !std::filesystem::exists( path ) )
+        throw std::runtime_error( "checkpoint '" + path + "' does not exist" );
+    Hdf5Ops h5( who, path );
+    const hid_t file =
+        h5.open( H5Fopen( path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT ),
+                 "H5Fopen", H5Fclose, "/" );
+    const bool is_checkpoint = h5.hasAttribute( file, "/", "format" ) &&
+                               h5.readAttribute( file, "/", "format" ) ==
+                                   AttributeValue( std::string( format_name ) );
+    if ( !is_checkpoint )
+        throw std::runtime_error( "'" + path +
+                                  "' is not a rainslide checkpoint (" +
+                                  format_name + ")" );
+    Checkpoint c;
+    const auto text = [&]( const char* name )
+    { return std::get<std::string>( h5.readAttribute( file, "/", name ) ); };
+    const auto integer = [&]( const char* name )
+    { return std::get<std::int64_t>( h5.readAttribute( file, "/", name ) ); };
+    const auto real = [&]( const char* name )
+    { return std::get<double>( h5.readAttribute( file, "/", name ) ); };
+    CheckpointIdentity& id = c.identity;
+    id.case_name = text( "case_name" );
+    id.case_file = text( "case_file" );
+    id.analysis = text( "analysis" );
+    id.num_points = integer( "n_points" );
+    id.backend = text( "backend" );
+    id.threads = static_cast<int>( integer( "threads" ) );
+    const auto fingerprint =
+        readVector<unsigned char>( h5, file, "case_fingerprint" );
+    id.case_fingerprint.assign( fingerprint.begin(), fingerprint.end() );
+    c.time_s = real( "time_s" );
+    c.step = integer( "step" );
+    c.num_removed = static_cast<int>( integer( "num_removed" ) );
+    c.grid_num_active = static_cast<int>( integer( "grid_num_active" ) );
+    c.wall_s = real( "wall_s" );
+    c.snapshots.count = integer( "snapshot_count" );
+    c.snapshots.last_step = integer( "last_snapshot_step" );
+    c.snapshots.last_time_s = real( "last_snapshot_time_s" );
+
+    c.arrays = readArrays( path, file );
+
+    const hid_t conditions =
+        h5.open( H5Gopen2( file, "conditions", H5P_DEFAULT ), "H5Gopen2",
+                 H5Gclose, "/conditions" );
+    c.load_counts = readVector<int>( h5, conditions, "load_counts" );
+    const auto sizes = readVector<int>( h5, conditions, "load_group_sizes" );
+    const auto members =
+        readVector<int>( h5, conditions, "load_group_members" );
+    std::size_t at = 0;
+    for ( const int size : sizes )
+    {
+        if ( size < 0 || at + size > members.size() )
+            throw std::runtime_error( "checkpoint '" + path +
+                                      "': inconsistent load groups" );
+        c.load_groups.emplace_back( members.begin() + at,
+                                    members.begin() + at + size );
+        at += size;
+    }
+    c.inflow_volumes = readVector<double>( h5, conditions, "inflow_volumes" );
+    c.inflow_lengths_m =
+        readVector<double>( h5, conditions, "inflow_lengths_m" );
+    c.next_surface_update_s = std::get<double>( h5.readAttribute(
+        conditions, "/conditions", "next_surface_update_s" ) );
+
+    readLoop( path, file, c.loop );
+    h5.closeAll();
+    return c;
+}
+
+//---------------------------------------------------------------------------//
+std::string checkpointMismatch( const Checkpoint& checkpoint,
+                                const std::string& checkpoint_file,
+                                const CheckpointIdentity& now )
+{
+    const CheckpointIdentity& then = checkpoint.identity;
+    std::string issues;
+    if ( then.case_name != now.case_name )
+        issues += "  case name: '" + then.case_name + "' in the checkpoint, '" +
+                  now.case_name + "' now\n";
+    if ( then.analysis != now.analysis )
+        issues += "  case.analysis: " + then.analysis + " in the checkpoint, " +
+                  now.analysis + " now\n";
+    if ( then.num_points != now.num_points )
+        issues += "  number of material points: " +
+                  std::to_string( then.num_points ) + " in the checkpoint, " +
+                  std::to_string( now.num_points ) + " now\n";
+    if ( fnv1aHash( then.case_fingerprint ) !=
+         fnv1aHash( now.case_fingerprint ) )
+        issues += "  the case's keys differ (case hash " +
+                  hashText( fnv1aHash( then.case_fingerprint ) ) +
+                  " in the checkpoint, " +
+                  hashText( fnv1aHash( now.case_fingerprint ) ) + " now):\n" +
+                  fingerprintDifferences( then.case_fingerprint,
+                                          now.case_fingerprint );
+    if ( issues.empty() )
+        return "";
+    return "cannot restart from checkpoint '" + checkpoint_file +
+           "': it was written for case file '" + then.case_file +
+           "', which differs from '" + now.case_file + "':\n" + issues +
+           "A checkpoint continues only the unchanged case it was written "
+           "for (solver.checkpoint_interval_s may change).";
+}
+
+} // namespace mpm

@@ -1,0 +1,141 @@
+#include <io/mpm_probe_recorder.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <stdexcept>
+
+namespace mpm
+{
+namespace
+{
+constexpr double gravity_for_K = 9.81; // m/s^2
+} // namespace
+
+//---------------------------------------------------------------------------//
+ProbeRecorder::ProbeRecorder( const CaseConfig& config,
+                              const HostSnapshot& initial,
+                              const std::string& out_dir )
+    : _interval_s( config.probes.interval_s )
+    , _path( out_dir + "/probes.csv" )
+{
+    if ( config.probes.points.empty() )
+        return;
+    const bool dry = config.analysis == AnalysisType::Dry;
+    for ( const MaterialConfig& m : config.materials )
+        _K_of_material.push_back(
+            dry ? 0.0
+                : m.permeability_m2 * config.water.density_kg_per_m3 *
+                      gravity_for_K / config.water.viscosity_pa_s );
+    for ( const ProbeConfig& wanted : config.probes.points )
+    {
+        Probe probe;
+        probe.name = wanted.name;
+        double best = std::numeric_limits<double>::infinity();
+        for ( int p = 0; p < initial.num_points; ++p )
+        {
+            const double d =
+                std::hypot( initial.x[2 * p] - wanted.position_m[0],
+                            initial.x[2 * p + 1] - wanted.position_m[1] );
+            if ( d < best )
+            {
+                best = d;
+                probe.point = p;
+            }
+        }
+        if ( best > config.grid.cell_size_m )
+            throw std::runtime_error(
+                config.file + ": probes: the point '" + wanted.name + "' at [" +
+                std::to_string( wanted.position_m[0] ) + ", " +
+                std::to_string( wanted.position_m[1] ) +
+                "] m is not in the soil: the nearest material point is " +
+                std::to_string( best ) +
+                " m away (more than one cell); move it inside a body" );
+        probe.distance_m = best;
+        _probes.push_back( probe );
+    }
+}
+
+//---------------------------------------------------------------------------//
+void ProbeRecorder::open( const double resume_time_s )
+{
+    if ( _probes.empty() )
+        return;
+    const std::string partial = _path + ".partial";
+    // Rows of the interrupted session up to the restart time.
+    std::vector<std::string> kept;
+    if ( resume_time_s >= 0.0 )
+    {
+        std::ifstream earlier( _path );
+        if ( !earlier )
+            earlier.open( partial );
+        std::string line;
+        std::getline( earlier, line ); // header
+        while ( std::getline( earlier, line ) )
+            if ( std::stod( line.substr( 0, line.find( ',' ) ) ) <=
+                 resume_time_s * ( 1.0 + 1.0e-12 ) )
+                kept.push_back( line );
+    }
+    std::remove( _path.c_str() );
+    _out.open( partial, std::ios::trunc );
+    if ( !_out )
+        throw std::runtime_error( "cannot write " + partial );
+    _out << "time_s,stage,name,point_id,x_m,y_m,u_x_m,u_y_m,v_x_m_per_s,"
+            "v_y_m_per_s,v_w_x_m_per_s,v_w_y_m_per_s,p_w_pa,S,eps_p_bar,"
+            "K_m_per_s\n"
+         << std::setprecision( 9 );
+    for ( const std::string& line : kept )
+        _out << line << '\n';
+    _out.flush();
+    _next_time_s =
+        resume_time_s < 0.0
+            ? 0.0
+            : _interval_s * ( std::floor( resume_time_s / _interval_s *
+                                          ( 1.0 + 1.0e-12 ) ) +
+                              1.0 );
+}
+
+//---------------------------------------------------------------------------//
+void ProbeRecorder::record( const RunProgress& progress,
+                            const HostSnapshot& snapshot )
+{
+    const bool water = !snapshot.p_w.empty();
+    for ( const Probe& probe : _probes )
+    {
+        const int p = probe.point;
+        auto pair = [&]( const std::vector<double>& field )
+        { _out << ',' << field[2 * p] << ',' << field[2 * p + 1]; };
+        _out << progress.time_s << ',' << progress.stage << ',' << probe.name
+             << ',' << snapshot.id[p];
+        pair( snapshot.x );
+        pair( snapshot.displacement );
+        pair( snapshot.v );
+        if ( water )
+        {
+            pair( snapshot.v_w );
+            _out << ',' << snapshot.p_w[p] << ',' << snapshot.S[p];
+        }
+        else
+            _out << ",nan,nan,nan,nan";
+        _out << ',' << snapshot.eps_p_bar[p] << ','
+             << _K_of_material[snapshot.material[p]] << '\n';
+    }
+    _out.flush();
+    _next_time_s =
+        _interval_s *
+        ( std::floor( progress.time_s / _interval_s * ( 1.0 + 1.0e-12 ) ) +
+          1.0 );
+}
+
+//---------------------------------------------------------------------------//
+void ProbeRecorder::finish()
+{
+    if ( !_out.is_open() )
+        return;
+    _out.close();
+    std::rename( ( _path + ".partial" ).c_str(), _path.c_str() );
+    _next_time_s = 1.0e300;
+}
+
+} // namespace mpm

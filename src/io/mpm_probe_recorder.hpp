@@ -1,0 +1,73 @@
+#ifndef MPM_PROBE_RECORDER_HPP
+#define MPM_PROBE_RECORDER_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <solver/mpm_run_observer.hpp>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Records the case's [probes] (tracked material points) every
+  probes.interval_s of run time to `<out>/probes.csv`: one row per probe
+  and record, header
+
+    time_s,stage,name,point_id,x_m,y_m,u_x_m,u_y_m,v_x_m_per_s,v_y_m_per_s,
+    v_w_x_m_per_s,v_w_y_m_per_s,p_w_pa,S,eps_p_bar,K_m_per_s
+
+  Each probe follows the material point nearest to its position when the
+  run starts. K_m_per_s = k rho_w g / mu (g = 9.81 m/s^2) of the point's
+  material, the saturated hydraulic conductivity (0 in a dry case, whose
+  water columns are "nan"). Rows go to probes.csv.partial, flushed per
+  record; finish() renames it to probes.csv, so a crash never leaves a
+  partial probes.csv behind.
+*/
+class ProbeRecorder
+{
+  public:
+    //! Picks the probe points from the run's initial state.
+    ProbeRecorder( const CaseConfig& config, const HostSnapshot& initial,
+                   const std::string& out_dir );
+
+    /*!
+      \brief Opens probes.csv.partial. resume_time_s < 0: a new run;
+      otherwise a run restarted at that run time: the rows of the earlier
+      session up to it (from probes.csv or probes.csv.partial) are kept.
+    */
+    void open( double resume_time_s );
+
+    bool empty() const { return _probes.empty(); }
+    //! Run time of the next record (infinite without probes).
+    double nextTime() const { return _next_time_s; }
+    //! Appends the rows of one record and schedules the next.
+    void record( const RunProgress& progress, const HostSnapshot& snapshot );
+    //! Closes and renames probes.csv.partial to probes.csv.
+    void finish();
+    //! Path of the finished file.
+    std::string path() const { return _path; }
+
+    //! One tracked point.
+    struct Probe
+    {
+        std::string name;
+        int point = -1;          //!< index of the tracked point
+        double distance_m = 0.0; //!< from the requested position at the start
+    };
+    const std::vector<Probe>& probes() const { return _probes; }
+
+  private:
+    std::vector<Probe> _probes;
+    std::vector<double> _K_of_material;
+    double _interval_s = 0.0;
+    double _next_time_s = 1.0e300;
+    std::string _path;
+    std::ofstream _out;
+};
+
+} // namespace mpm
+
+#endif // MPM_PROBE_RECORDER_HPP

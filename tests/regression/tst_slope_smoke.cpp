@@ -1,0 +1,122 @@
+// The slope study's cases in short, coarse versions: the shipped base case
+// on cells of 1 m runs through its equilibrium stage into the rainfall, and
+// a rainfall that follows the surface adds the water that falls on the
+// surface's horizontal projection.
+#include <mpm_test_backends.hpp>
+#include <mpm_test_cases.hpp>
+
+#include <io/mpm_case_reader.hpp>
+#include <solver/mpm_run_stages.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#ifndef RAINSLIDE_CASES_DIR
+#define RAINSLIDE_CASES_DIR "/work/main/cases"
+#endif
+
+namespace
+{
+template <class ExecSpace>
+class SlopeSmoke : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( SlopeSmoke, mpm_test::Backends, mpm_test::BackendName );
+
+//! Water volume sum n S V of the points, m^3 per metre.
+double waterVolume( const mpm::HostSnapshot& snap )
+{
+    double volume = 0.0;
+    for ( int p = 0; p < snap.num_points; ++p )
+        volume += snap.n[p] * snap.S[p] * snap.vol[p];
+    return volume;
+}
+
+/*!
+  cases/slope_base.toml on 1 m cells, 1 s of its gravity and suction stage
+  (not to equilibrium: a smoke test) and 1 s of rainfall: the slope stays
+  put, the points held at p_w = 0 are saturated, and water has entered the
+  soil.
+*/
+TYPED_TEST( SlopeSmoke, coarse_base_case_wets_its_surface )
+{
+    auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_base.toml" );
+    config.grid.cell_size_m = 1.0;
+    config.grid.cells = { 72, 21 };
+    config.stages[0].duration_s = 1.0;
+    config.stages[1].duration_s = 1.0;
+    config.stages[1].snapshot_interval_s = 0.0;
+    config.stages[1].snapshot_times_s.clear();
+
+    mpm::Simulation<TypeParam> sim( config );
+    const double before = waterVolume( mpm::hostSnapshot( sim ) );
+    mpm::RunObserver observer;
+    const auto summary = mpm::runStages( sim, config, observer );
+    ASSERT_EQ( summary.stages.size(), 2u );
+
+    const auto snap = mpm::hostSnapshot( sim );
+    double max_displacement = 0.0;
+    int saturated = 0;
+    for ( int p = 0; p < snap.num_points; ++p )
+    {
+        ASSERT_TRUE( std::isfinite( snap.p_w[p] ) );
+        max_displacement = std::max(
+            max_displacement, std::hypot( snap.displacement[2 * p],
+                                          snap.displacement[2 * p + 1] ) );
+        if ( snap.p_w[p] > -1.0e3 )
+            ++saturated;
+    }
+    EXPECT_LT( max_displacement, 0.05 );
+    // The surface cells hold about a fifth of the points on 1 m cells.
+    EXPECT_GT( saturated, snap.num_points / 8 );
+    // Water entered: at least the surface cells' pore space filled up from
+    // S = 0.23 (n (1 - S) = 0.23 per m^3, over ~75 m^2 of surface cells).
+    EXPECT_GT( waterVolume( snap ) - before, 10.0 )
+        << "water gained " << waterVolume( snap ) - before << " m^3/m";
+}
+
+/*!
+  Rain that follows the surface on an L-shaped block (a 2 m wide step up
+  from a 4 m wide base, zero gravity, sealed): the rain falls on the
+  surface's horizontal projection, 4 m, so the soil gains q * 4 m * t,
+  whatever the inclination or the height of the surface cells.
+*/
+TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
+{
+    mpm::MaterialConfig soil =
+        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
+    soil.retention.model = mpm::RetentionType::VanGenuchten;
+    soil.retention.alpha_per_pa = 4.4e-4;
+    soil.retention.n = 3.04;
+    soil.retention.residual_saturation = 0.23;
+    mpm::StageConfig rain;
+    rain.name = "rain";
+    rain.type = mpm::StageType::Dynamic;
+    rain.gravity_m_per_s2 = { 0.0, 0.0 };
+    rain.duration_s = 1.0;
+    auto config = mpm_test::columnCase( 2.0, 0.25, soil, rain );
+    config.analysis = mpm::AnalysisType::Unsaturated;
+    config.grid.cells = { 16, 8 };
+    config.bodies[0].polygon_m = { { 0.0, 0.0 }, { 4.0, 0.0 }, { 4.0, 1.0 },
+                                   { 2.0, 1.0 }, { 2.0, 2.0 }, { 0.0, 2.0 } };
+    config.bodies[0].initial_pore_pressure_pa = -2.0e4;
+    mpm::WaterInflow inflow;
+    inflow.points.kind = mpm::PointSelection::Kind::SurfaceCells;
+    inflow.flux_m_per_s = 1.0e-4;
+    inflow.ponding = false;
+    inflow.follow_surface_interval_s = 0.1;
+    config.stages[0].inflows = { inflow };
+
+    mpm::Simulation<TypeParam> sim( config );
+    const double before = waterVolume( mpm::hostSnapshot( sim ) );
+    EXPECT_DOUBLE_EQ( sim.conditions.inflows[0].length_m, 4.0 );
+    mpm::RunObserver observer;
+    mpm::runStages( sim, config, observer );
+    const double added = waterVolume( mpm::hostSnapshot( sim ) ) - before;
+    const double expected = 1.0e-4 * 4.0 * 1.0;
+    EXPECT_NEAR( added, expected, 0.01 * expected );
+    EXPECT_DOUBLE_EQ( sim.conditions.inflows[0].length_m, 4.0 );
+}
+
+} // namespace

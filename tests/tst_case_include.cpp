@@ -1,0 +1,189 @@
+// Case files that include others (a shared geometry), [probes] and the
+// slope study's case files.
+#include <io/mpm_case_reader.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#ifndef RAINSLIDE_CASES_DIR
+#define RAINSLIDE_CASES_DIR "/work/main/cases"
+#endif
+
+namespace
+{
+namespace fs = std::filesystem;
+
+//! A fresh directory for the files of one test.
+fs::path freshDir( const std::string& name )
+{
+    const fs::path dir =
+        fs::temp_directory_path() / ( "rainslide_include_" + name );
+    fs::remove_all( dir );
+    fs::create_directories( dir );
+    return dir;
+}
+
+void writeFile( const fs::path& path, const std::string& text )
+{
+    std::ofstream( path ) << text;
+}
+
+const char* geometry = R"(# a shared geometry
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.5
+cells = [20, 10]
+
+[[bodies]]
+material = "soil"
+polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]
+
+[[materials]]
+name = "soil"
+model = "mohr_coulomb"
+density_kg_per_m3 = 2000.0
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.3
+cohesion_peak_pa = 20.0e3
+friction_angle_deg = 20.0
+
+[[stages]]
+name = "gravity"
+type = "dynamic"
+duration_s = 1.0
+)";
+
+TEST( CaseInclude, merges_tables_and_arrays_of_tables_by_index )
+{
+    const fs::path dir = freshDir( "merge" );
+    writeFile( dir / "geometry.toml", geometry );
+    writeFile( dir / "case.toml", R"(include = "geometry.toml"
+[case]
+name = "merged"
+[grid]
+cell_size_m = 0.25
+cells = [40, 20]
+[[materials]]
+friction_angle_deg = 30.0
+[[materials]]
+name = "rock"
+model = "linear_elastic"
+density_kg_per_m3 = 2500.0
+youngs_modulus_pa = 1.0e9
+poisson_ratio = 0.25
+)" );
+    const mpm::CaseConfig config =
+        mpm::readCaseFile( ( dir / "case.toml" ).string() );
+    EXPECT_EQ( config.name, "merged" );
+    // Scalars of the including file replace the included ones.
+    EXPECT_DOUBLE_EQ( config.grid.cell_size_m, 0.25 );
+    EXPECT_EQ( config.grid.cells[0], 40 );
+    EXPECT_DOUBLE_EQ( config.grid.origin_m[0], 0.0 );
+    // Element 0 merged key by key, element 1 appended.
+    ASSERT_EQ( config.materials.size(), 2u );
+    EXPECT_DOUBLE_EQ( config.materials[0].friction_angle_deg, 30.0 );
+    EXPECT_DOUBLE_EQ( config.materials[0].cohesion_peak_pa, 20.0e3 );
+    EXPECT_EQ( config.materials[1].name, "rock" );
+    ASSERT_EQ( config.bodies.size(), 1u );
+    EXPECT_DOUBLE_EQ( config.bodies[0].polygon_m[2][1], 4.0 );
+}
+
+TEST( CaseInclude, errors_name_the_file_that_set_the_key )
+{
+    const fs::path dir = freshDir( "errors" );
+    std::string bad_geometry = geometry;
+    bad_geometry.replace( bad_geometry.find( "cell_size_m = 0.5" ), 17,
+                          "cell_size_m = -1.0" );
+    writeFile( dir / "geometry.toml", bad_geometry );
+    writeFile( dir / "case.toml",
+               "include = \"geometry.toml\"\n[case]\nname = \"x\"\n" );
+    try
+    {
+        mpm::readCaseFile( ( dir / "case.toml" ).string() );
+        FAIL() << "accepted an invalid included file";
+    }
+    catch ( const mpm::CaseError& e )
+    {
+        const std::string expected = ( dir / "geometry.toml" ).string() +
+                                     ":4:15: error: key 'grid.cell_size_m'";
+        EXPECT_EQ( std::string( e.what() ).rfind( expected, 0 ), 0u )
+            << e.what();
+    }
+}
+
+TEST( CaseInclude, nested_includes_resolve_relative_to_each_file )
+{
+    const fs::path dir = freshDir( "nested" );
+    fs::create_directories( dir / "shared" );
+    writeFile( dir / "shared" / "geometry.toml", geometry );
+    writeFile( dir / "shared" / "base.toml",
+               "include = \"geometry.toml\"\n[case]\nname = \"base\"\n" );
+    writeFile( dir / "variant.toml", "include = \"shared/base.toml\"\n"
+                                     "[case]\nname = \"variant\"\n" );
+    const mpm::CaseConfig config =
+        mpm::readCaseFile( ( dir / "variant.toml" ).string() );
+    EXPECT_EQ( config.name, "variant" );
+    EXPECT_EQ( config.grid.cells[1], 10 );
+}
+
+TEST( CaseInclude, probes_are_read )
+{
+    const fs::path dir = freshDir( "probes" );
+    writeFile( dir / "geometry.toml", geometry );
+    writeFile( dir / "case.toml", R"(include = "geometry.toml"
+[case]
+name = "probes"
+[probes]
+interval_s = 0.05
+points = [ { name = "A", position_m = [1.0, 3.5] },
+           { name = "B", position_m = [9.0, 3.5] } ]
+)" );
+    const mpm::CaseConfig config =
+        mpm::readCaseFile( ( dir / "case.toml" ).string() );
+    EXPECT_DOUBLE_EQ( config.probes.interval_s, 0.05 );
+    ASSERT_EQ( config.probes.points.size(), 2u );
+    EXPECT_EQ( config.probes.points[1].name, "B" );
+    EXPECT_DOUBLE_EQ( config.probes.points[1].position_m[0], 9.0 );
+}
+
+//---------------------------------------------------------------------------//
+// The slope study: every case shares the geometry, and a parametric case
+// differs from the base case only in its parameter.
+TEST( SlopeCases, parametric_cases_differ_from_the_base_in_one_parameter )
+{
+    const auto base =
+        mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_base.toml" );
+    ASSERT_EQ( base.materials.size(), 1u );
+    EXPECT_EQ( base.probes.points.size(), 4u );
+    struct Variant
+    {
+        const char* file;
+        double friction_deg;
+        double residual_pa;
+    };
+    for ( const Variant v : { Variant{ "slope_phi15.toml", 15.0, 100.0 },
+                              Variant{ "slope_phi30.toml", 30.0, 100.0 },
+                              Variant{ "slope_cr001.toml", 20.0, 10.0 },
+                              Variant{ "slope_cr5.toml", 20.0, 5000.0 } } )
+    {
+        SCOPED_TRACE( v.file );
+        const auto c = mpm::readCaseFile( std::string( RAINSLIDE_CASES_DIR ) +
+                                          "/" + v.file );
+        EXPECT_NE( c.name, base.name );
+        const mpm::MaterialConfig& m = c.materials.at( 0 );
+        const mpm::MaterialConfig& b = base.materials[0];
+        EXPECT_DOUBLE_EQ( m.friction_angle_deg, v.friction_deg );
+        EXPECT_DOUBLE_EQ( m.cohesion_residual_pa, v.residual_pa );
+        EXPECT_DOUBLE_EQ( m.cohesion_peak_pa, b.cohesion_peak_pa );
+        EXPECT_DOUBLE_EQ( m.softening_modulus_pa, b.softening_modulus_pa );
+        EXPECT_DOUBLE_EQ( m.permeability_m2, b.permeability_m2 );
+        EXPECT_EQ( c.grid.cells, base.grid.cells );
+        EXPECT_EQ( c.bodies[0].polygon_m, base.bodies[0].polygon_m );
+        EXPECT_EQ( c.stages.size(), base.stages.size() );
+    }
+}
+
+} // namespace
