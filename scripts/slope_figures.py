@@ -69,10 +69,12 @@ class Plotter:
         self.eps_log = eps_log
         self.pw_range = pw_range
         self.interval = self._typical_interval()
+        self._noted = set()  # requested times already reported as far from a snapshot
         # Extent: every point of the stage's snapshots, plus the initial state.
         lo, hi = x0.min(axis=0), x0.max(axis=0)
         for s in run.stage_snapshots:
             x = run.field(s, "x")[run.active(s)]
+            x = x[np.isfinite(x).all(axis=1)]  # an unstable run's last snapshot may hold NaN
             if len(x):
                 lo, hi = np.minimum(lo, x.min(axis=0)), np.maximum(hi, x.max(axis=0))
         pad = 2.0 * self.spacing
@@ -89,9 +91,10 @@ class Plotter:
         picks = []
         for t in times:
             snap = self.run.nearest(t)
-            if abs(snap.t - t) > max(0.5 * self.interval, 1e-6):
+            if abs(snap.t - t) > max(0.5 * self.interval, 1e-6) and t not in self._noted:
+                self._noted.add(t)
                 print(f"slope_figures: note: no snapshot near t = {t:g} s; using snapshot "
-                      f"{snap.name} at t = {snap.t:.4g} s", file=sys.stderr)
+                      f"{snap.name} at t = {snap.t:.4g} s")
             picks.append((t, snap))
         return picks
 
@@ -108,6 +111,7 @@ class Plotter:
         """Points of `snap` as squares of the point spacing coloured by `values`."""
         from matplotlib.collections import PolyCollection
         act = self.run.active(snap) if only is None else only
+        act = act & np.isfinite(self.run.field(snap, "x")).all(axis=1)
         x = self.run.field(snap, "x")[act]
         h = 0.6 * self.spacing  # covers the wider gap of Gauss-point layouts
         corners = np.array([[-h, -h], [h, -h], [h, h], [-h, h]])
@@ -228,6 +232,7 @@ class Plotter:
         values = [self.run.field(s, "stress")[:, 2] / 1e3 for _, s in picks]
         if limit_kpa is None:
             allv = np.concatenate([np.abs(v[self.run.active(s)]) for v, (_, s) in zip(values, picks)])
+            allv = allv[np.isfinite(allv)]
             limit_kpa = max(5.0, 5.0 * math.ceil(np.percentile(allv, 99) / 5.0)) if allv.size else 5.0
         norm = colors.TwoSlopeNorm(vmin=-limit_kpa, vcenter=0.0, vmax=limit_kpa)
         fig, grid = self.layout(len(picks), 1)
@@ -299,15 +304,16 @@ class Plotter:
         if not any(r["stage"] == self.run.stage for r in own):
             own = [r for r in rows if r["time_s"] >= self.run.stage_start_s - 1e-9]
         if not own:
-            print(f"slope_figures: {path} has no row of stage '{self.run.stage}'; "
-                  "fig9 skipped", file=sys.stderr)
+            print(f"slope_figures: note: {path} has no row of stage '{self.run.stage}'; "
+                  "fig9 skipped")
             return None
         if not any(r["K_m_per_s"] > 0 and math.isfinite(r["v_w_x_m_per_s"]) for r in own):
-            print(f"slope_figures: {path} has no water velocity with K > 0 (a dry run?); "
-                  "fig9 skipped", file=sys.stderr)
+            print(f"slope_figures: note: {path} has no water velocity with K > 0 (a dry run?); "
+                  "fig9 skipped")
             return None
         names = sorted({r["name"] for r in own})
         fig, ax = plt.subplots(figsize=(8.5, 4.8), constrained_layout=True)
+        where = []
         for k, name in enumerate(names):
             rs = sorted((r for r in own if r["name"] == name), key=lambda r: r["time_s"])
             t = np.array([r["time_s"] for r in rs]) - self.run.stage_start_s
@@ -317,14 +323,15 @@ class Plotter:
             with np.errstate(divide="ignore", invalid="ignore"):
                 mag, comp = np.hypot(vx, vy) / K, vx / K
             color = f"C{k % 10}"
-            where = f" (x, y = {rs[0]['x_m']:.1f}, {rs[0]['y_m']:.1f} m at t = {t[0]:.3g} s)"
-            ax.plot(t, mag, color=color, lw=1.2, label=f"{name}: $|v_w|/K$" + where)
+            where.append(f"{name} ({rs[0]['x_m']:.1f}, {rs[0]['y_m']:.1f})")
+            ax.plot(t, mag, color=color, lw=1.2, label=f"{name}: $|v_w|/K$")
             ax.plot(t, comp, color=color, lw=0.9, ls="--", label=f"{name}: $v_{{w,x}}/K$")
         ax.axhline(0.0, color="0.6", lw=0.5)
         ax.set_xlabel(f"time since the start of stage '{self.run.stage}' (s)")
         ax.set_ylabel("$v_w / K$ (-)")
-        ax.set_title(f"{self.run.case_name()}: water velocity over saturated hydraulic "
-                     "conductivity at the probes", fontsize=9)
+        ax.set_title(f"{self.run.case_name()}: water velocity $v_w$ over the saturated hydraulic "
+                     "conductivity K at the probes\n(solid: magnitude, dashed: x component; "
+                     f"x, y in m at t = {t[0]:.3g} s: {', '.join(where)})", fontsize=8)
         ax.legend(fontsize=7, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.14))
         ax.grid(alpha=0.3)
         return self.save(fig, "fig9_vw_over_K.png")
@@ -389,7 +396,7 @@ def main(argv=None):
             if os.path.isfile(probes):
                 plotter.fig_probes(probes)
             else:
-                print(f"slope_figures: {probes} not found; fig9 (v_w/K at the probes) skipped")
+                print(f"slope_figures: note: {probes} not found; fig9 (v_w/K at the probes) skipped")
         finally:
             run.close()
     except sm.InputError as e:

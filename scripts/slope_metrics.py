@@ -505,6 +505,9 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
         ever[kref[in_group]] = True
 
         max_x = float(x[in_group, 0].max()) if in_group.any() else None
+        # Also over every sliding point, fragments below the minimum area included.
+        frag = cand & np.isfinite(x[:, 0])
+        max_x_all = float(x[frag, 0].max()) if frag.any() else None
         max_d = float(dist[act].max()) if act.any() else 0.0
         series["time_s"].append(_json_num(t))
         series["sliding_area_m2"].append(_json_num(area))
@@ -520,6 +523,8 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
                  "sliding_area_m2": _json_num(area), "n_groups": int(counted.size),
                  "run_out_m": _json_num(max_x - toe) if max_x is not None else None,
                  "max_x_sliding_m": _json_num(max_x),
+                 "run_out_incl_fragments_m": _json_num(max_x_all - toe)
+                 if max_x_all is not None else None,
                  "max_displacement_m": _json_num(max_d),
                  "max_displacement_point_id": int(ids[a]),
                  "max_displacement_point_initial_xy_m": [_json_num(v) for v in ref_x[kref[a]]]}
@@ -542,7 +547,9 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
                            "newly entering counted groups grows at >= jump_rate_m2_per_s after "
                            "a quiet spell ('area jump'; re-armed when the rate stayed below "
                            "jump_rate/2 for quiet_s; the first failure arms it the same way)",
-            "run_out": "largest x of a point in a counted group minus toe_x_m",
+            "run_out": "largest x of a point in a counted group minus toe_x_m "
+                       "(final.run_out_incl_fragments_m: of any sliding point, fragments "
+                       "below min_group_area_m2 included)",
             "max_displacement": "largest |x - x_ref| over active points",
             "parameters": {k: v for k, v in opt.items()},
         },
@@ -587,7 +594,8 @@ def summary_lines(r):
                          f" from initial x {s['initial_x_range_m']}")
     lines.append(f"final (t = {f['time_s']} s): sliding area {f['sliding_area_m2']} m2 in "
                  f"{f['n_groups']} group(s), run-out {f['run_out_m']} m "
-                 f"(max x {f['max_x_sliding_m']} m), max displacement {f['max_displacement_m']} m")
+                 f"(max x {f['max_x_sliding_m']} m; {f['run_out_incl_fragments_m']} m with "
+                 f"fragments), max displacement {f['max_displacement_m']} m")
     return lines
 
 
