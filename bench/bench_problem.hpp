@@ -107,8 +107,9 @@ void loadView( const std::vector<T>& values, const ViewType& view )
 //---------------------------------------------------------------------------//
 /*!
   \brief The block problem on ExecSpace in its prepared state, with the
-  phases of the dry MUSL step (as in Simulation::advance) callable one by
-  one to set up the input of the kernel under test.
+  phases of the dry MUSL step callable one by one (the stand-alone kernels;
+  Simulation::advance runs fused versions of them) to set up the input of
+  the kernel under test.
 */
 template <class ExecSpace>
 class BlockProblem

@@ -35,12 +35,14 @@ struct StepDiagnostics
 template <class ExecSpace>
 struct PointSoundness
 {
-    typename ParticleViews<ExecSpace>::vector_view x_p;
-    typename ParticleViews<ExecSpace>::tensor_view sigma_p;
-    typename ParticleViews<ExecSpace>::scalar_view vol_p;
+    using pv_type = ParticleViews<ExecSpace>;
+    using wv_type = WaterParticleViews<ExecSpace>;
+    UnmanagedView<typename pv_type::vector_view> x_p;
+    UnmanagedView<typename pv_type::tensor_view> sigma_p;
+    UnmanagedView<typename pv_type::scalar_view> vol_p;
     bool two_phase;
-    typename WaterParticleViews<ExecSpace>::scalar_view p_w_p;
-    typename WaterParticleViews<ExecSpace>::vector_view v_w_p;
+    UnmanagedView<typename wv_type::scalar_view> p_w_p;
+    UnmanagedView<typename wv_type::vector_view> v_w_p;
 
     PointSoundness( const ParticleViews<ExecSpace>& pv,
                     const WaterParticleViews<ExecSpace>& wv )
@@ -74,9 +76,9 @@ template <class ExecSpace>
 double kineticEnergy( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto status_p = pv.status_p;
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto status_p = unmanaged( pv.status_p );
     double energy = 0.0;
     Kokkos::parallel_reduce(
         "mpm::kinetic_energy",
@@ -104,8 +106,8 @@ int findUnstablePoint( const ExecSpace& exec_space,
                        const double speed_limit )
 {
     const PointSoundness<ExecSpace> sound( pv, wv );
-    const auto v_p = pv.v_p;
-    const auto status_p = pv.status_p;
+    const auto v_p = unmanaged( pv.v_p );
+    const auto status_p = unmanaged( pv.status_p );
     const int none = pv.size();
     int first = none;
     Kokkos::parallel_reduce(

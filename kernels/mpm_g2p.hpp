@@ -75,12 +75,12 @@ void g2pVelocity( const ExecSpace& exec_space,
                   const double flip_fraction )
 {
     const auto grid = gv.geometry;
-    const auto v_i = gv.v_i;
-    const auto dv_i = gv.dv_i;
-    const auto x_p = pv.x_p;
-    const auto v_p = pv.v_p;
-    const auto du_p = pv.du_p;
-    const auto status_p = pv.status_p;
+    const auto v_i = unmanaged( gv.v_i );
+    const auto dv_i = unmanaged( gv.dv_i );
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_p = unmanaged( pv.v_p );
+    const auto du_p = unmanaged( pv.du_p );
+    const auto status_p = unmanaged( pv.status_p );
 
     Kokkos::parallel_for(
         "mpm::g2p_velocity",
@@ -106,17 +106,18 @@ void g2pVelocityRemap( const ExecSpace& exec_space,
                        const ParticleViews<ExecSpace>& pv,
                        const GridViews<ExecSpace>& gv, const double dt,
                        const double flip_fraction,
-                       const GridScatter<ExecSpace, 2, Duplication>& sums )
+                       const GridScatter<ExecSpace, 2, Duplication>& scatter )
 {
+    const auto sums = scatter.handle();
     const auto grid = gv.geometry;
     const int ny1 = grid.ny + 1;
-    const auto v_i = gv.v_i;
-    const auto dv_i = gv.dv_i;
-    const auto x_p = pv.x_p;
-    const auto v_p = pv.v_p;
-    const auto du_p = pv.du_p;
-    const auto m_p = pv.m_p;
-    const auto status_p = pv.status_p;
+    const auto v_i = unmanaged( gv.v_i );
+    const auto dv_i = unmanaged( gv.dv_i );
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_p = unmanaged( pv.v_p );
+    const auto du_p = unmanaged( pv.du_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto status_p = unmanaged( pv.status_p );
 
     Kokkos::parallel_for(
         "mpm::g2p_velocity_remap",
@@ -147,24 +148,25 @@ void g2pVelocityRemapTwoPhase(
     const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
     const WaterGridViews<ExecSpace>& wg, const double dt,
     const double flip_fraction, const double water_density,
-    const GridScatter<ExecSpace, 4, Duplication>& sums )
+    const GridScatter<ExecSpace, 4, Duplication>& scatter )
 {
+    const auto sums = scatter.handle();
     const auto grid = gv.geometry;
     const int ny1 = grid.ny + 1;
-    const auto v_s_i = gv.v_i;
-    const auto dv_s_i = gv.dv_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto dv_w_i = wg.dv_w_i;
-    const auto x_p = pv.x_p;
-    const auto v_s_p = pv.v_p;
-    const auto du_p = pv.du_p;
-    const auto m_s_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto status_p = pv.status_p;
-    const auto v_w_p = wv.v_w_p;
-    const auto S_p = wv.S_p;
-    const auto n_p = wv.n_p;
-    const typename ParticleViews<ExecSpace>::vector_view no_du;
+    const auto v_s_i = unmanaged( gv.v_i );
+    const auto dv_s_i = unmanaged( gv.dv_i );
+    const auto v_w_i = unmanaged( wg.v_w_i );
+    const auto dv_w_i = unmanaged( wg.dv_w_i );
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_s_p = unmanaged( pv.v_p );
+    const auto du_p = unmanaged( pv.du_p );
+    const auto m_s_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const auto v_w_p = unmanaged( wv.v_w_p );
+    const auto S_p = unmanaged( wv.S_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> no_du;
 
     Kokkos::parallel_for(
         "mpm::g2p_velocity_remap_two_phase",

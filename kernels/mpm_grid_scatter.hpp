@@ -25,6 +25,7 @@ namespace mpm
   entries are ever non-zero, so the cost follows the points, not the grid
   (the paper's slope fills a fifth of its grid). The copies add up in the
   order Kokkos' ScatterView contributes them, 0 + copy 0 + copy 1 + ...
+  Kernels capture handle(), which does not own the sums.
 */
 template <class ExecSpace, int NumFields,
           class Duplication = typename ScatterDuplication<ExecSpace>::type>
@@ -46,40 +47,89 @@ class GridScatter
         std::is_same<ScatterContribution<ExecSpace, Duplication>,
                      Kokkos::Experimental::ScatterAtomic>::value;
 
-    //! The contributions of one thread to one GridScatter (RAII copy slot).
-    class Access
+    //! The sums as kernels use them (no ownership, cheap to copy).
+    class Handle
     {
       public:
-        KOKKOS_INLINE_FUNCTION Access( const GridScatter& scatter )
-            : _scatter( scatter )
-            , _copy( scatter.acquire() )
+        //! The contributions of one thread (RAII copy slot).
+        class Access
+        {
+          public:
+            KOKKOS_INLINE_FUNCTION Access( const Handle& handle )
+                : _handle( handle )
+                , _copy( handle.acquire() )
+            {
+            }
+            KOKKOS_INLINE_FUNCTION ~Access() { _handle.release( _copy ); }
+
+            //! sums(entry, field) += value.
+            KOKKOS_INLINE_FUNCTION void add( const int entry, const int field,
+                                             const double value ) const
+            {
+                double& sum = _handle._sums( _copy, entry, field );
+                if constexpr ( atomic )
+                    Kokkos::atomic_add( &sum, value );
+                else
+                    sum += value;
+            }
+
+            //! Marks an entry as touched (listed by listTouched).
+            KOKKOS_INLINE_FUNCTION void touch( const int entry ) const
+            {
+                int& mark = _handle._touched( _copy, entry );
+                if constexpr ( atomic )
+                    Kokkos::atomic_assign( &mark, 1 );
+                else
+                    mark = 1;
+            }
+
+          private:
+            const Handle& _handle;
+            const int _copy;
+        };
+
+        Handle( const sums_view& sums, const touched_view& touched )
+            : _sums( sums )
+            , _touched( touched )
         {
         }
-        KOKKOS_INLINE_FUNCTION ~Access() { _scatter.release( _copy ); }
 
-        //! sums(entry, field) += value.
-        KOKKOS_INLINE_FUNCTION void add( const int entry, const int field,
-                                         const double value ) const
-        {
-            double& sum = _scatter._sums( _copy, entry, field );
-            if constexpr ( atomic )
-                Kokkos::atomic_add( &sum, value );
-            else
-                sum += value;
-        }
+        //! The calling thread's access (inside a point loop).
+        KOKKOS_INLINE_FUNCTION Access access() const { return Access( *this ); }
 
-        //! Marks an entry as touched (listed by listTouched).
-        KOKKOS_INLINE_FUNCTION void touch( const int entry ) const
+        //! Sum over the copies of `field` at `entry`; clears them. Each
+        //! entry and field is taken by one thread.
+        KOKKOS_INLINE_FUNCTION double take( const int entry,
+                                            const int field ) const
         {
-            if constexpr ( atomic )
-                Kokkos::atomic_assign( &_scatter._touched( _copy, entry ), 1 );
-            else
-                _scatter._touched( _copy, entry ) = 1;
+            double sum = 0.0;
+            for ( int c = 0; c < static_cast<int>( _sums.extent( 0 ) ); ++c )
+            {
+                sum += _sums( c, entry, field );
+                _sums( c, entry, field ) = 0.0;
+            }
+            return sum;
         }
 
       private:
-        const GridScatter& _scatter;
-        const int _copy;
+        KOKKOS_INLINE_FUNCTION int acquire() const
+        {
+            if constexpr ( duplicated )
+                return _token.acquire();
+            else
+                return 0;
+        }
+        KOKKOS_INLINE_FUNCTION void release( const int copy ) const
+        {
+            if constexpr ( duplicated )
+                _token.release( copy );
+            else
+                (void)copy;
+        }
+
+        UnmanagedView<sums_view> _sums;
+        UnmanagedView<touched_view> _touched;
+        token_type _token;
     };
 
     GridScatter() = default;
@@ -97,21 +147,8 @@ class GridScatter
 
     bool allocated() const { return _sums.extent( 0 ) > 0; }
 
-    //! The calling thread's access (inside a point loop).
-    KOKKOS_INLINE_FUNCTION Access access() const { return Access( *this ); }
-
-    //! Sum over the copies of `field` at `entry`; clears them. Each entry
-    //! and field is taken by one thread.
-    KOKKOS_INLINE_FUNCTION double take( const int entry, const int field ) const
-    {
-        double sum = 0.0;
-        for ( int c = 0; c < static_cast<int>( _sums.extent( 0 ) ); ++c )
-        {
-            sum += _sums( c, entry, field );
-            _sums( c, entry, field ) = 0.0;
-        }
-        return sum;
-    }
+    //! What a kernel captures; valid while this GridScatter lives.
+    Handle handle() const { return Handle( _sums, _touched ); }
 
     /*!
       \brief Lists the touched entries, in increasing order, into `list`
@@ -119,7 +156,8 @@ class GridScatter
     */
     int listTouched( const ExecSpace& exec_space, const index_view& list ) const
     {
-        const auto touched = _touched;
+        const auto touched = unmanaged( _touched );
+        const auto entries = unmanaged( list );
         const int num_copies = touched.extent( 0 );
         int count = 0;
         Kokkos::parallel_scan(
@@ -134,7 +172,7 @@ class GridScatter
                     return;
                 if ( final )
                 {
-                    list( offset ) = e;
+                    entries( offset ) = e;
                     for ( int c = 0; c < num_copies; ++c )
                         touched( c, e ) = 0;
                 }
@@ -145,24 +183,8 @@ class GridScatter
     }
 
   private:
-    KOKKOS_INLINE_FUNCTION int acquire() const
-    {
-        if constexpr ( duplicated )
-            return _token.acquire();
-        else
-            return 0;
-    }
-    KOKKOS_INLINE_FUNCTION void release( const int copy ) const
-    {
-        if constexpr ( duplicated )
-            _token.release( copy );
-        else
-            (void)copy;
-    }
-
     sums_view _sums;
     touched_view _touched;
-    token_type _token;
 };
 
 //---------------------------------------------------------------------------//

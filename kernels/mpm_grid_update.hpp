@@ -19,8 +19,8 @@ template <class ExecSpace>
 void findActiveNodes( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                       const double mass_tolerance = 0.0 )
 {
-    const auto m_i = gv.m_i;
-    const auto active_i = gv.active_i;
+    const auto m_i = unmanaged( gv.m_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
     int num_active = 0;
     Kokkos::parallel_scan(
@@ -50,13 +50,13 @@ void gridUpdateDry( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                     const double inertia_scaling = 1.0 )
 {
     const physics::DryNodalUpdate update{ dt, damping, inertia_scaling };
-    const auto m_i = gv.m_i;
-    const auto p_i = gv.p_i;
-    const auto f_i = gv.f_i;
-    const auto v_i = gv.v_i;
-    const auto dv_i = gv.dv_i;
-    const auto flags_i = gv.flags_i;
-    const auto active_i = gv.active_i;
+    const auto m_i = unmanaged( gv.m_i );
+    const auto p_i = unmanaged( gv.p_i );
+    const auto f_i = unmanaged( gv.f_i );
+    const auto v_i = unmanaged( gv.v_i );
+    const auto dv_i = unmanaged( gv.dv_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -81,11 +81,11 @@ void gridUpdateDry( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
 template <class ExecSpace>
 void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv )
 {
-    const auto m_i = gv.m_i;
-    const auto p_i = gv.p_i;
-    const auto v_i = gv.v_i;
-    const auto flags_i = gv.flags_i;
-    const auto active_i = gv.active_i;
+    const auto m_i = unmanaged( gv.m_i );
+    const auto p_i = unmanaged( gv.p_i );
+    const auto v_i = unmanaged( gv.v_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -111,18 +111,19 @@ void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv )
 template <class ExecSpace, class Duplication>
 void gridUpdateDry(
     const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& sums,
+    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& scatter,
     const double dt, const double damping, const double inertia_scaling )
 {
-    gv.num_active = sums.listTouched( exec_space, gv.active_i );
+    const auto sums = scatter.handle();
+    gv.num_active = scatter.listTouched( exec_space, gv.active_i );
     const physics::DryNodalUpdate update{ dt, damping, inertia_scaling };
-    const auto m_i = gv.m_i;
-    const auto p_i = gv.p_i;
-    const auto f_i = gv.f_i;
-    const auto v_i = gv.v_i;
-    const auto dv_i = gv.dv_i;
-    const auto flags_i = gv.flags_i;
-    const auto active_i = gv.active_i;
+    const auto m_i = unmanaged( gv.m_i );
+    const auto p_i = unmanaged( gv.p_i );
+    const auto f_i = unmanaged( gv.f_i );
+    const auto v_i = unmanaged( gv.v_i );
+    const auto dv_i = unmanaged( gv.dv_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -152,13 +153,14 @@ void gridUpdateDry(
 */
 template <class ExecSpace, class Duplication>
 void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-                    const GridScatter<ExecSpace, 2, Duplication>& sums )
+                    const GridScatter<ExecSpace, 2, Duplication>& scatter )
 {
-    const auto m_i = gv.m_i;
-    const auto p_i = gv.p_i;
-    const auto v_i = gv.v_i;
-    const auto flags_i = gv.flags_i;
-    const auto active_i = gv.active_i;
+    const auto sums = scatter.handle();
+    const auto m_i = unmanaged( gv.m_i );
+    const auto p_i = unmanaged( gv.p_i );
+    const auto v_i = unmanaged( gv.v_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(

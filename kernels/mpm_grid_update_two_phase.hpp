@@ -25,31 +25,34 @@ namespace mpm
   permeability (physics::nodalDrag).
 */
 template <class ExecSpace, class Duplication>
-void gridUpdateTwoPhase(
-    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-    WaterGridViews<ExecSpace>& wg,
-    const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>& sums,
-    const double dt, const double damping, const double water_density,
-    const double water_viscosity, const double inertia_scaling = 1.0 )
+void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+                         WaterGridViews<ExecSpace>& wg,
+                         const GridScatter<ExecSpace, TwoPhaseNodeField::count,
+                                           Duplication>& scatter,
+                         const double dt, const double damping,
+                         const double water_density,
+                         const double water_viscosity,
+                         const double inertia_scaling = 1.0 )
 {
+    const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
-    gv.num_active = sums.listTouched( exec_space, gv.active_i );
+    gv.num_active = scatter.listTouched( exec_space, gv.active_i );
     const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
-    const auto m_s_i = gv.m_i;
-    const auto mv_s_i = gv.p_i;
-    const auto f_m_i = gv.f_i;
-    const auto v_s_i = gv.v_i;
-    const auto dv_s_i = gv.dv_i;
-    const auto flags_i = gv.flags_i;
-    const auto m_w_i = wg.m_w_i;
-    const auto vol_i = wg.vol_i;
-    const auto mv_w_i = wg.mv_w_i;
-    const auto f_w_i = wg.f_w_i;
-    const auto q_i = wg.q_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto dv_w_i = wg.dv_w_i;
-    const auto flags_w_i = wg.flags_w_i;
-    const auto active_i = gv.active_i;
+    const auto m_s_i = unmanaged( gv.m_i );
+    const auto mv_s_i = unmanaged( gv.p_i );
+    const auto f_m_i = unmanaged( gv.f_i );
+    const auto v_s_i = unmanaged( gv.v_i );
+    const auto dv_s_i = unmanaged( gv.dv_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto m_w_i = unmanaged( wg.m_w_i );
+    const auto vol_i = unmanaged( wg.vol_i );
+    const auto mv_w_i = unmanaged( wg.mv_w_i );
+    const auto f_w_i = unmanaged( wg.f_w_i );
+    const auto q_i = unmanaged( wg.q_i );
+    const auto v_w_i = unmanaged( wg.v_w_i );
+    const auto dv_w_i = unmanaged( wg.dv_w_i );
+    const auto flags_w_i = unmanaged( wg.flags_w_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -114,20 +117,21 @@ void gridUpdateTwoPhase(
   (v_w = v_s on tied components).
 */
 template <class ExecSpace, class Duplication>
-void remapVelocityTwoPhase( const ExecSpace& exec_space,
-                            GridViews<ExecSpace>& gv,
-                            WaterGridViews<ExecSpace>& wg,
-                            const GridScatter<ExecSpace, 4, Duplication>& sums )
+void remapVelocityTwoPhase(
+    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+    WaterGridViews<ExecSpace>& wg,
+    const GridScatter<ExecSpace, 4, Duplication>& scatter )
 {
-    const auto m_s_i = gv.m_i;
-    const auto mv_s_i = gv.p_i;
-    const auto v_s_i = gv.v_i;
-    const auto flags_i = gv.flags_i;
-    const auto m_w_i = wg.m_w_i;
-    const auto mv_w_i = wg.mv_w_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto flags_w_i = wg.flags_w_i;
-    const auto active_i = gv.active_i;
+    const auto sums = scatter.handle();
+    const auto m_s_i = unmanaged( gv.m_i );
+    const auto mv_s_i = unmanaged( gv.p_i );
+    const auto v_s_i = unmanaged( gv.v_i );
+    const auto flags_i = unmanaged( gv.flags_i );
+    const auto m_w_i = unmanaged( wg.m_w_i );
+    const auto mv_w_i = unmanaged( wg.mv_w_i );
+    const auto v_w_i = unmanaged( wg.v_w_i );
+    const auto flags_w_i = unmanaged( wg.flags_w_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(

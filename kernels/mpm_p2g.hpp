@@ -48,17 +48,19 @@ void scatterMassMomentumForce(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const physics::GridGeometry& grid, const double gravity_x,
     const double gravity_y, const LoadView& load_force,
-    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& sums )
+    const GridScatter<ExecSpace, DryNodeField::count, Duplication>& scatter )
 {
+    const auto sums = scatter.handle();
     using F = DryNodeField;
     const int ny1 = grid.ny + 1;
-    const auto x_p = pv.x_p;
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto sigma_p = pv.sigma_p;
-    const auto status_p = pv.status_p;
-    const auto load_p = pv.load_p;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto sigma_p = unmanaged( pv.sigma_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const auto load_p = unmanaged( pv.load_p );
+    const auto loads = unmanaged( load_force );
 
     Kokkos::parallel_for(
         "mpm::p2g_mass_momentum_force",
@@ -78,9 +80,9 @@ void scatterMassMomentumForce(
             const double s_xy = sigma_p( p, 2 );
             const int load = load_p( p );
             const double f_x =
-                m * gravity_x + ( load >= 0 ? load_force( load, 0 ) : 0.0 );
+                m * gravity_x + ( load >= 0 ? loads( load, 0 ) : 0.0 );
             const double f_y =
-                m * gravity_y + ( load >= 0 ? load_force( load, 1 ) : 0.0 );
+                m * gravity_y + ( load >= 0 ? loads( load, 1 ) : 0.0 );
             for ( int k = 0; k < 4; ++k )
             {
                 const int n = nodeIndex( ci + ( k & 1 ), cj + ( k >> 1 ), ny1 );
@@ -129,19 +131,20 @@ void p2gMassMomentumForce( const ExecSpace& exec_space,
                            GridViews<ExecSpace>& gv, const double gravity_x,
                            const double gravity_y, const LoadView& load_force )
 {
-    const DryNodeSums<ExecSpace, Duplication> sums( "p2g_sums",
-                                                    gv.geometry.numNodes() );
+    const DryNodeSums<ExecSpace, Duplication> scatter( "p2g_sums",
+                                                       gv.geometry.numNodes() );
     scatterMassMomentumForce( exec_space, pv, gv.geometry, gravity_x, gravity_y,
-                              load_force, sums );
+                              load_force, scatter );
+    const auto sums = scatter.handle();
     Kokkos::deep_copy( exec_space, gv.m_i, 0.0 );
     Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
     Kokkos::deep_copy( exec_space, gv.f_i, 0.0 );
-    gv.num_active = sums.listTouched( exec_space, gv.active_i );
+    gv.num_active = scatter.listTouched( exec_space, gv.active_i );
 
-    const auto m_i = gv.m_i;
-    const auto p_i = gv.p_i;
-    const auto f_i = gv.f_i;
-    const auto active_i = gv.active_i;
+    const auto m_i = unmanaged( gv.m_i );
+    const auto p_i = unmanaged( gv.p_i );
+    const auto f_i = unmanaged( gv.f_i );
+    const auto active_i = unmanaged( gv.active_i );
     const int ny1 = gv.geometry.ny + 1;
     Kokkos::parallel_for(
         "mpm::take_mass_momentum_force",
@@ -193,14 +196,15 @@ template <class ExecSpace,
 void p2gMomentum( const ExecSpace& exec_space,
                   const ParticleViews<ExecSpace>& pv, GridViews<ExecSpace>& gv )
 {
-    const MomentumSums<ExecSpace, Duplication> sums( "remap_sums",
-                                                     gv.geometry.numNodes() );
+    const MomentumSums<ExecSpace, Duplication> scatter(
+        "remap_sums", gv.geometry.numNodes() );
+    const auto sums = scatter.handle();
     const auto grid = gv.geometry;
     const int ny1 = grid.ny + 1;
-    const auto x_p = pv.x_p;
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto status_p = pv.status_p;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto status_p = unmanaged( pv.status_p );
 
     Kokkos::parallel_for(
         "mpm::p2g_momentum",
@@ -215,8 +219,8 @@ void p2gMomentum( const ExecSpace& exec_space,
                                   v_p( p, 0 ), v_p( p, 1 ) );
         } );
 
-    const auto p_i = gv.p_i;
-    const auto active_i = gv.active_i;
+    const auto p_i = unmanaged( gv.p_i );
+    const auto active_i = unmanaged( gv.active_i );
     Kokkos::parallel_for(
         "mpm::take_momentum",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),

@@ -65,23 +65,26 @@ void scatterTwoPhase(
     const WaterParticleViews<ExecSpace>& wv, const physics::GridGeometry& grid,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double gravity_x, const double gravity_y, const LoadView& load_force,
-    const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>& sums )
+    const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>&
+        scatter )
 {
+    const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
     const int ny1 = grid.ny + 1;
-    const auto x_p = pv.x_p;
-    const auto v_s_p = pv.v_p;
-    const auto m_s_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto sigma_p = pv.sigma_p;
-    const auto material_p = pv.material_p;
-    const auto status_p = pv.status_p;
-    const auto p_w_p = wv.p_w_p;
-    const auto S_p = wv.S_p;
-    const auto n_p = wv.n_p;
-    const auto k_rel_p = wv.k_rel_p;
-    const auto v_w_p = wv.v_w_p;
-    const auto load_p = pv.load_p;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto v_s_p = unmanaged( pv.v_p );
+    const auto m_s_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto sigma_p = unmanaged( pv.sigma_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const auto p_w_p = unmanaged( wv.p_w_p );
+    const auto S_p = unmanaged( wv.S_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const auto k_rel_p = unmanaged( wv.k_rel_p );
+    const auto v_w_p = unmanaged( wv.v_w_p );
+    const auto load_p = unmanaged( pv.load_p );
+    const auto loads = unmanaged( load_force );
 
     Kokkos::parallel_for(
         "mpm::p2g_two_phase",
@@ -108,8 +111,8 @@ void scatterTwoPhase(
             double load[2] = { 0.0, 0.0 };
             if ( load_p( p ) >= 0 )
             {
-                load[0] = load_force( load_p( p ), 0 );
-                load[1] = load_force( load_p( p ), 1 );
+                load[0] = loads( load_p( p ), 0 );
+                load[1] = loads( load_p( p ), 1 );
             }
             const double v_s[2] = { v_s_p( p, 0 ), v_s_p( p, 1 ) };
             const double v_w[2] = { v_w_p( p, 0 ), v_w_p( p, 1 ) };

@@ -28,29 +28,31 @@ struct PointUpdateReport
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The last point loop of a step, one pass over the points:
-  `update_state(p, params)` (velocity gradient, pore pressure, stress),
-  then the position update x_p += du_p (a point that left the grid is
-  removed with `remove_outside`, else reported), then the diagnostics of
-  the new state (StepDiagnostics; `wave_speed(p, params)` is the point's
-  fastest wave speed).
+  \brief The last point loop of a step, one pass over the points in groups
+  of GroupSize: `update_states(count, p, params)` updates the state of the
+  group's `count` active points p[0..count) of materials params[l]
+  (velocity gradient, pore pressure, stress), then, point after point, the
+  position, x_p += du_p (a point that left the grid is removed with
+  `remove_outside`, else reported), and the diagnostics of the new state
+  (StepDiagnostics; `wave_speed(p, params)` is the point's fastest wave
+  speed).
 */
-template <class ExecSpace, class StateUpdate, class WaveSpeed>
+template <int GroupSize, class ExecSpace, class StateUpdate, class WaveSpeed>
 PointUpdateReport
 updatePoints( const char* label, const ExecSpace& exec_space,
               const ParticleViews<ExecSpace>& pv,
               const WaterParticleViews<ExecSpace>& wv,
               const physics::MaterialTable& materials,
               const physics::GridGeometry& grid, const bool remove_outside,
-              const StateUpdate& update_state, const WaveSpeed& wave_speed )
+              const StateUpdate& update_states, const WaveSpeed& wave_speed )
 {
     const PointSoundness<ExecSpace> sound( pv, wv );
-    const auto x_p = pv.x_p;
-    const auto du_p = pv.du_p;
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto material_p = pv.material_p;
-    const auto status_p = pv.status_p;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto du_p = unmanaged( pv.du_p );
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto status_p = unmanaged( pv.status_p );
     const double cell_size = grid.h;
     const int none = pv.size();
     StepDiagnostics d{ 0.0, 0.0, 0.0, 0.0, none };
@@ -58,39 +60,59 @@ updatePoints( const char* label, const ExecSpace& exec_space,
     int num_removed = 0;
 
     Kokkos::parallel_reduce(
-        label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max,
+        label,
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0,
+                                        ( none + GroupSize - 1 ) / GroupSize ),
+        KOKKOS_LAMBDA( const int group, double& dt_min, double& c_max,
                        double& energy, double& speed2_max, int& first_unsound,
                        int& first_out, int& removed ) {
-            if ( status_p( p ) != point_active )
-                return;
-            const physics::MaterialParams& params = materials[material_p( p )];
-            update_state( p, params );
-            if ( movePoint( p, x_p, du_p, grid ) )
-            {
-                if ( remove_outside )
+            // The group's active points.
+            int p[GroupSize];
+            const physics::MaterialParams* params[GroupSize];
+            int count = 0;
+            const int end = ( group + 1 ) * GroupSize < none
+                                ? ( group + 1 ) * GroupSize
+                                : none;
+            for ( int q = group * GroupSize; q < end; ++q )
+                if ( status_p( q ) == point_active )
                 {
-                    status_p( p ) = point_removed;
-                    ++removed;
-                    return;
+                    p[count] = q;
+                    params[count] = &materials[material_p( q )];
+                    ++count;
                 }
-                if ( p < first_out )
-                    first_out = p;
+            if ( count == 0 )
+                return;
+            update_states( count, p, params );
+            for ( int l = 0; l < count; ++l )
+            {
+                const int q = p[l];
+                if ( movePoint( q, x_p, du_p, grid ) )
+                {
+                    if ( remove_outside )
+                    {
+                        status_p( q ) = point_removed;
+                        ++removed;
+                        continue;
+                    }
+                    if ( q < first_out )
+                        first_out = q;
+                }
+                // Diagnostics of the new state.
+                const double c = wave_speed( q, *params[l] );
+                const double dt =
+                    pointTimeStep( cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
+                dt_min = dt < dt_min ? dt : dt_min;
+                c_max = c > c_max ? c : c_max;
+                energy +=
+                    0.5 * m_p( q ) *
+                    ( v_p( q, 0 ) * v_p( q, 0 ) + v_p( q, 1 ) * v_p( q, 1 ) );
+                const double speed2 =
+                    v_p( q, 0 ) * v_p( q, 0 ) + v_p( q, 1 ) * v_p( q, 1 );
+                if ( !sound( q, speed2 ) )
+                    first_unsound = q < first_unsound ? q : first_unsound;
+                else
+                    speed2_max = speed2 > speed2_max ? speed2 : speed2_max;
             }
-            // Diagnostics of the new state.
-            const double c = wave_speed( p, params );
-            const double dt =
-                pointTimeStep( cell_size, c, v_p( p, 0 ), v_p( p, 1 ) );
-            dt_min = dt < dt_min ? dt : dt_min;
-            c_max = c > c_max ? c : c_max;
-            energy += 0.5 * m_p( p ) *
-                      ( v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 ) );
-            const double speed2 =
-                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
-            if ( !sound( p, speed2 ) )
-                first_unsound = p < first_unsound ? p : first_unsound;
-            else
-                speed2_max = speed2 > speed2_max ? speed2 : speed2_max;
         },
         Kokkos::Min<double>( d.dt_limit ),
         Kokkos::Max<double>( d.max_wave_speed ),
@@ -104,10 +126,124 @@ updatePoints( const char* label, const ExecSpace& exec_space,
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief The velocity gradient L of a point for the step's stress and pore
+  pressure (two-phase: also its water divergence, waterDivergenceAt), kept
+  in grad_v_p (and div_v_w_p): from the remapped nodal velocities or, with
+  `bbar`, the gradient of velocityGradientCellSums with the cell-averaged
+  volumetric rates (cellAverageVolumetricRate, and the cell average of the
+  water divergence).
+*/
+template <class ExecSpace>
+struct StepVelocityGradient
+{
+    using pv_type = ParticleViews<ExecSpace>;
+    using wv_type = WaterParticleViews<ExecSpace>;
+    using gv_type = GridViews<ExecSpace>;
+    using wg_type = WaterGridViews<ExecSpace>;
+    bool bbar;
+    bool two_phase;
+    double water_density;
+    physics::GridGeometry grid;
+    UnmanagedView<typename gv_type::vector_view> v_s_i;
+    UnmanagedView<typename wg_type::vector_view> v_w_i;
+    UnmanagedView<typename wg_type::scalar_view> m_w_i, vol_i, div_w_c;
+    UnmanagedView<typename gv_type::scalar_view> vol_c, dvol_c;
+    UnmanagedView<typename pv_type::vector_view> x_p;
+    UnmanagedView<typename pv_type::gradient_view> grad_v_p;
+    UnmanagedView<typename wv_type::scalar_view> div_v_w_p, n_p, S_p;
+
+    StepVelocityGradient( const ParticleViews<ExecSpace>& pv,
+                          const WaterParticleViews<ExecSpace>& wv,
+                          const GridViews<ExecSpace>& gv,
+                          const WaterGridViews<ExecSpace>& wg,
+                          const double density_w, const bool cell_average )
+        : bbar( cell_average )
+        , two_phase( wv.allocated() )
+        , water_density( density_w )
+        , grid( gv.geometry )
+        , v_s_i( gv.v_i )
+        , v_w_i( wg.v_w_i )
+        , m_w_i( wg.m_w_i )
+        , vol_i( wg.vol_i )
+        , div_w_c( wg.div_w_c )
+        , vol_c( gv.vol_c )
+        , dvol_c( gv.dvol_c )
+        , x_p( pv.x_p )
+        , grad_v_p( pv.grad_v_p )
+        , div_v_w_p( wv.div_v_w_p )
+        , n_p( wv.n_p )
+        , S_p( wv.S_p )
+    {
+    }
+
+    //! L and (two-phase) div v_w of point p.
+    KOKKOS_FORCEINLINE_FUNCTION void operator()( const int p, double L[2][2],
+                                                 double& div_v_w ) const
+    {
+        div_v_w = 0.0;
+        if ( bbar )
+        {
+            for ( int a = 0; a < 2; ++a )
+                for ( int b = 0; b < 2; ++b )
+                    L[a][b] = grad_v_p( p, a, b );
+            if ( two_phase )
+                div_v_w = div_v_w_p( p );
+            int ci, cj;
+            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+                return;
+            cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
+            grad_v_p( p, 0, 0 ) = L[0][0];
+            grad_v_p( p, 1, 1 ) = L[1][1];
+            if ( two_phase )
+            {
+                div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
+                div_v_w_p( p ) = div_v_w;
+            }
+            return;
+        }
+        int ci, cj;
+        double w[4], dwdx[4], dwdy[4];
+        grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+        gradientAt( ci, cj, dwdx, dwdy, v_s_i, L );
+        for ( int a = 0; a < 2; ++a )
+            for ( int b = 0; b < 2; ++b )
+                grad_v_p( p, a, b ) = L[a][b];
+        if ( two_phase )
+        {
+            div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i,
+                                         m_w_i, vol_i, water_density,
+                                         n_p( p ) * S_p( p ), L );
+            div_v_w_p( p ) = div_v_w;
+        }
+    }
+};
+
+//---------------------------------------------------------------------------//
+//! The state update of the dry step (updatePoints): velocity gradient
+//! (StepVelocityGradient) and stress of each point of a group.
+template <class ExecSpace>
+struct DryStateUpdate
+{
+    StepVelocityGradient<ExecSpace> gradient;
+    StressPointUpdate<ExecSpace> stress;
+
+    KOKKOS_FORCEINLINE_FUNCTION void
+    operator()( const int count, const int p[],
+                const physics::MaterialParams* const params[] ) const
+    {
+        for ( int l = 0; l < count; ++l )
+        {
+            double L[2][2], div_v_w;
+            gradient( p[l], L, div_v_w );
+            stress( p[l], L, *params[l] );
+        }
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
   \brief The last point loop of the dry step (updatePoints): velocity
-  gradient from the remapped nodal velocity (with `bbar`: the gradient of
-  velocityGradientCellSums with its cell-averaged volumetric part), stress
-  update, position update and diagnostics.
+  gradient, stress update, position update and diagnostics.
 */
 template <class ExecSpace>
 PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
@@ -117,63 +253,56 @@ PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
                                    const double dt, const bool bbar,
                                    const bool remove_outside )
 {
-    const StressPointUpdate<ExecSpace> stress( pv, dt );
-    const auto grid = gv.geometry;
-    const auto v_i = gv.v_i;
-    const auto vol_c = gv.vol_c;
-    const auto dvol_c = gv.dvol_c;
-    const auto x_p = pv.x_p;
-    const auto grad_v_p = pv.grad_v_p;
-    const auto m_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-
-    const auto update_state =
-        KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
-    {
-        double L[2][2];
-        if ( bbar )
-        {
-            for ( int a = 0; a < 2; ++a )
-                for ( int b = 0; b < 2; ++b )
-                    L[a][b] = grad_v_p( p, a, b );
-            int ci, cj;
-            if ( grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
-            {
-                cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
-                grad_v_p( p, 0, 0 ) = L[0][0];
-                grad_v_p( p, 1, 1 ) = L[1][1];
-            }
-        }
-        else
-        {
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            gradientAt( ci, cj, dwdx, dwdy, v_i, L );
-            for ( int a = 0; a < 2; ++a )
-                for ( int b = 0; b < 2; ++b )
-                    grad_v_p( p, a, b ) = L[a][b];
-        }
-        stress( p, L, params );
-    };
+    const WaterParticleViews<ExecSpace> no_water;
+    const DryStateUpdate<ExecSpace> update_states{
+        StepVelocityGradient<ExecSpace>(
+            pv, no_water, gv, WaterGridViews<ExecSpace>(), 0.0, bbar ),
+        StressPointUpdate<ExecSpace>( pv, dt ) };
+    const auto m_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
     const auto wave_speed =
         KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
     {
         return waveSpeedDry( params, m_p( p ), vol_p( p ) );
     };
-    return updatePoints( "mpm::update_points_dry", exec_space, pv,
-                         WaterParticleViews<ExecSpace>(), materials, grid,
-                         remove_outside, update_state, wave_speed );
+    return updatePoints<1>( "mpm::update_points_dry", exec_space, pv, no_water,
+                            materials, gv.geometry, remove_outside,
+                            update_states, wave_speed );
 }
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The last point loop of the two-phase step (updatePoints): solid
-  velocity gradient and water divergence (waterDivergenceAt) from the
-  remapped nodal velocities (with `bbar`: those of
-  velocityGradientCellSums with their cell averages), pore pressure,
-  porosity and retention state (`pore_pressure`, PorePressurePointUpdate),
-  stress, position update and diagnostics.
+  \brief The state update of the two-phase step (updatePoints) of a group
+  of up to PorePressureUpdate::lanes points: velocity gradient and water
+  divergence (StepVelocityGradient), pore pressure, porosity and retention
+  state (PorePressurePointUpdate, the whole group at once), stress.
+*/
+template <class ExecSpace, class PorePressureUpdate>
+struct TwoPhaseStateUpdate
+{
+    static constexpr int lanes = PorePressureUpdate::lanes;
+    StepVelocityGradient<ExecSpace> gradient;
+    PorePressureUpdate pore_pressure;
+    StressPointUpdate<ExecSpace> stress;
+
+    KOKKOS_FORCEINLINE_FUNCTION void
+    operator()( const int count, const int p[],
+                const physics::MaterialParams* const params[] ) const
+    {
+        double L[lanes][2][2], div_v_w[lanes];
+        for ( int l = 0; l < count; ++l )
+            gradient( p[l], L[l], div_v_w[l] );
+        pore_pressure( count, p, L, div_v_w, params );
+        for ( int l = 0; l < count; ++l )
+            stress( p[l], L[l], *params[l] );
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The last point loop of the two-phase step (updatePoints): velocity
+  gradient, water divergence, pore pressure (`pore_pressure`,
+  PorePressurePointUpdate), stress, position update and diagnostics.
 */
 template <class ExecSpace, class PorePressureUpdate>
 PointUpdateReport updatePointsTwoPhase(
@@ -184,71 +313,22 @@ PointUpdateReport updatePointsTwoPhase(
     const double dt, const bool bbar, const bool remove_outside,
     const PorePressureUpdate& pore_pressure )
 {
-    const StressPointUpdate<ExecSpace> stress( pv, dt );
-    const auto grid = gv.geometry;
-    const auto v_s_i = gv.v_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto m_w_i = wg.m_w_i;
-    const auto vol_i = wg.vol_i;
-    const auto vol_c = gv.vol_c;
-    const auto dvol_c = gv.dvol_c;
-    const auto div_w_c = wg.div_w_c;
-    const auto x_p = pv.x_p;
-    const auto grad_v_p = pv.grad_v_p;
-    const auto m_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto div_v_w_p = wv.div_v_w_p;
-    const auto n_p = wv.n_p;
-    const auto S_p = wv.S_p;
-    const double water_density = water.density;
-
-    const auto update_state =
-        KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
-    {
-        double L[2][2];
-        double div_v_w;
-        if ( bbar )
-        {
-            for ( int a = 0; a < 2; ++a )
-                for ( int b = 0; b < 2; ++b )
-                    L[a][b] = grad_v_p( p, a, b );
-            div_v_w = div_v_w_p( p );
-            int ci, cj;
-            if ( grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
-            {
-                cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
-                grad_v_p( p, 0, 0 ) = L[0][0];
-                grad_v_p( p, 1, 1 ) = L[1][1];
-                div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
-                div_v_w_p( p ) = div_v_w;
-            }
-        }
-        else
-        {
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            gradientAt( ci, cj, dwdx, dwdy, v_s_i, L );
-            for ( int a = 0; a < 2; ++a )
-                for ( int b = 0; b < 2; ++b )
-                    grad_v_p( p, a, b ) = L[a][b];
-            div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i,
-                                         m_w_i, vol_i, water_density,
-                                         n_p( p ) * S_p( p ), L );
-            div_v_w_p( p ) = div_v_w;
-        }
-        pore_pressure( p, L, div_v_w, params );
-        stress( p, L, params );
-    };
+    const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
+        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar ),
+        pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
+    const auto m_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const auto S_p = unmanaged( wv.S_p );
     const auto wave_speed =
         KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
     {
         return waveSpeedTwoPhase( params, water, m_p( p ), vol_p( p ), n_p( p ),
                                   S_p( p ) );
     };
-    return updatePoints( "mpm::update_points_two_phase", exec_space, pv, wv,
-                         materials, grid, remove_outside, update_state,
-                         wave_speed );
+    return updatePoints<PorePressureUpdate::lanes>(
+        "mpm::update_points_two_phase", exec_space, pv, wv, materials,
+        gv.geometry, remove_outside, update_states, wave_speed );
 }
 
 } // namespace mpm

@@ -34,8 +34,8 @@ struct RetentionAt
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Pore pressure, porosity and retention state of one point
-  (formulation.md steps 6, 7, 9) from its velocity gradient L and water
+  \brief Pore pressure, porosity and retention state of points
+  (formulation.md steps 6, 7, 9) from their velocity gradient L and water
   divergence div v_w: p_w from the mass-conservative Eq. 8 (explicit when
   saturated), prescribed point pressures, porosity from Eq. 2 as
   n' = 1 - (1 - n) / det(I + L dt), then S, dS/dp_w, k_rel.
@@ -43,61 +43,90 @@ struct RetentionAt
   `inflow_rate(f)` the water volume inflow f adds per unit point volume
   and time (1/s), a source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on
   its points (the excess runs off). With `retention_current`, the stored
-  S_p and dS_dp_p are the retention law's values at p_w_p (true after an
-  unsaturated update with the same materials), which saves one retention
-  evaluation per point.
+  S_p, dS_dp_p and k_rel_p are the retention law's values at p_w_p (true
+  after an unsaturated update with the same materials), which saves one
+  retention evaluation per point, and all of them where p_w is held.
+  Updates up to `lanes` points at once, their Newton iterations in lock
+  step (physics::porePressureIncrements).
 */
 template <class ExecSpace, class PressureView, class RateView, class FlagView>
 struct PorePressurePointUpdate
 {
+    static constexpr int lanes = 4;
     using wv_type = WaterParticleViews<ExecSpace>;
+    using scalar_view = UnmanagedView<typename wv_type::scalar_view>;
+    using int_view = UnmanagedView<typename wv_type::int_view>;
     physics::Kinematics kinematics;
     physics::WaterParams water;
     bool saturated;
     bool retention_current;
-    typename wv_type::scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p;
-    typename wv_type::int_view condition_p, inflow_p;
-    PressureView prescribed_p_w;
-    RateView inflow_rate;
-    FlagView inflow_ponding;
+    scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p;
+    int_view condition_p, inflow_p;
+    UnmanagedView<PressureView> prescribed_p_w;
+    UnmanagedView<RateView> inflow_rate;
+    UnmanagedView<FlagView> inflow_ponding;
 
+    //! Updates the `count` (<= lanes) points p[l], with velocity gradient
+    //! L[l], water divergence div_v_w[l] and material params[l].
     KOKKOS_INLINE_FUNCTION void
-    operator()( const int p, const double L[2][2], const double div_v_w,
-                const physics::MaterialParams& params ) const
+    operator()( const int count, const int p[], const double L[][2][2],
+                const double div_v_w[],
+                const physics::MaterialParams* const params[] ) const
     {
-        const double dt = kinematics.dt;
-        const double n = n_p( p );
-        const double S = S_p( p );
-        const double div_s = L[0][0] + L[1][1];
-        // Water volume change per unit volume over the step (Eq. 8).
-        const int inflow = inflow_p( p );
-        const double source = inflow >= 0 ? inflow_rate( inflow ) : 0.0;
-        const double volume_change =
-            dt * ( source - n * S * div_v_w - ( 1.0 - n ) * S * div_s );
-        const RetentionAt retention{ params.retention };
-        double p_w = p_w_p( p );
-        if ( saturated )
-            p_w += volume_change * water.bulk_modulus / n;
-        else
+        RetentionAt retention[lanes];
+        physics::PorePressureNewton newton[lanes];
+        physics::SaturationState stored[lanes];
+        for ( int l = 0; l < lanes; ++l )
         {
-            const physics::SaturationState stored{ S, dS_dp_p( p ) };
-            p_w += physics::porePressureIncrement(
-                retention, p_w, S, n, water.bulk_modulus, volume_change,
-                retention_current ? &stored : nullptr );
+            newton[l].done = true;
+            if ( l >= count )
+                continue;
+            const int q = p[l];
+            const double n = n_p( q );
+            const double S = S_p( q );
+            const double div_s = L[l][0][0] + L[l][1][1];
+            // Water volume change per unit volume over the step (Eq. 8).
+            const int inflow = inflow_p( q );
+            const double source = inflow >= 0 ? inflow_rate( inflow ) : 0.0;
+            const double volume_change =
+                kinematics.dt *
+                ( source - n * S * div_v_w[l] - ( 1.0 - n ) * S * div_s );
+            retention[l] = RetentionAt{ params[l]->retention };
+            newton[l] = physics::PorePressureNewton(
+                p_w_p( q ), S, n, water.bulk_modulus, volume_change );
+            stored[l] = physics::SaturationState{ S, dS_dp_p( q ) };
+            // Explicit when saturated; a prescribed p_w replaces the
+            // increment.
+            newton[l].done = saturated || condition_p( q ) >= 0;
         }
-        if ( inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0 )
-            p_w = 0.0;
-        if ( condition_p( p ) >= 0 )
-            p_w = prescribed_p_w( condition_p( p ) );
-        p_w_p( p ) = p_w;
-        // Eq. 2 integrated over the step: (1 - n) V is constant.
-        n_p( p ) = 1.0 - ( 1.0 - n ) / kinematics.volumeRatio( L );
-        if ( !saturated )
+        physics::porePressureIncrements( retention, newton, stored,
+                                         retention_current );
+        for ( int l = 0; l < count; ++l )
         {
-            const physics::RetentionState state = retention.state( p_w );
-            S_p( p ) = state.S;
-            dS_dp_p( p ) = state.dS_dp;
-            k_rel_p( p ) = state.k_rel;
+            const int q = p[l];
+            const physics::PorePressureNewton& point = newton[l];
+            const int inflow = inflow_p( q );
+            const int condition = condition_p( q );
+            double p_w = point.p_w;
+            if ( saturated )
+                p_w += point.volume_change * water.bulk_modulus / point.n;
+            else if ( condition < 0 )
+                p_w += point.dp;
+            if ( inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0 )
+                p_w = 0.0;
+            if ( condition >= 0 )
+                p_w = prescribed_p_w( condition );
+            p_w_p( q ) = p_w;
+            // Eq. 2 integrated over the step: (1 - n) V is constant.
+            n_p( q ) = 1.0 - ( 1.0 - point.n ) / kinematics.volumeRatio( L[l] );
+            // The stored state is current at an unchanged p_w (held points).
+            if ( !saturated && !( retention_current && p_w == point.p_w ) )
+            {
+                const physics::RetentionState state = retention[l].state( p_w );
+                S_p( q ) = state.S;
+                dS_dp_p( q ) = state.dS_dp;
+                k_rel_p( q ) = state.k_rel;
+            }
         }
     }
 };

@@ -22,10 +22,10 @@ struct StressPointUpdate
 {
     using pv_type = ParticleViews<ExecSpace>;
     physics::Kinematics kinematics;
-    typename pv_type::tensor_view sigma_p;
-    typename pv_type::tensor_view eps_p;
-    typename pv_type::scalar_view eps_p_bar_p;
-    typename pv_type::scalar_view vol_p;
+    UnmanagedView<typename pv_type::tensor_view> sigma_p;
+    UnmanagedView<typename pv_type::tensor_view> eps_p;
+    UnmanagedView<typename pv_type::scalar_view> eps_p_bar_p;
+    UnmanagedView<typename pv_type::scalar_view> vol_p;
 
     StressPointUpdate( const ParticleViews<ExecSpace>& pv, const double dt )
         : kinematics{ dt }
@@ -69,9 +69,9 @@ void stressUpdate( const ExecSpace& exec_space,
                    const physics::MaterialTable& materials, const double dt )
 {
     const StressPointUpdate<ExecSpace> update( pv, dt );
-    const auto grad_v_p = pv.grad_v_p;
-    const auto material_p = pv.material_p;
-    const auto status_p = pv.status_p;
+    const auto grad_v_p = unmanaged( pv.grad_v_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto status_p = unmanaged( pv.status_p );
 
     Kokkos::parallel_for(
         "mpm::stress_update",

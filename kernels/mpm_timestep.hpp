@@ -63,11 +63,11 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
                                  const physics::MaterialTable& materials,
                                  const double cell_size )
 {
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto material_p = pv.material_p;
-    const auto status_p = pv.status_p;
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto status_p = unmanaged( pv.status_p );
     WaveSpeedLimit limit{ 0.0, 0.0 };
     Kokkos::parallel_reduce(
         "mpm::critical_time_step",
@@ -105,13 +105,13 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double cell_size )
 {
-    const auto v_p = pv.v_p;
-    const auto m_p = pv.m_p;
-    const auto vol_p = pv.vol_p;
-    const auto material_p = pv.material_p;
-    const auto status_p = pv.status_p;
-    const auto n_p = wv.n_p;
-    const auto S_p = wv.S_p;
+    const auto v_p = unmanaged( pv.v_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const auto S_p = unmanaged( wv.S_p );
     WaveSpeedLimit limit{ 0.0, 0.0 };
     Kokkos::parallel_reduce(
         "mpm::critical_time_step_two_phase",

@@ -76,10 +76,10 @@ void velocityGradient( const ExecSpace& exec_space,
                        const GridViews<ExecSpace>& gv )
 {
     const auto grid = gv.geometry;
-    const auto v_i = gv.v_i;
-    const auto x_p = pv.x_p;
-    const auto grad_v_p = pv.grad_v_p;
-    const auto status_p = pv.status_p;
+    const auto v_i = unmanaged( gv.v_i );
+    const auto x_p = unmanaged( pv.x_p );
+    const auto grad_v_p = unmanaged( pv.grad_v_p );
+    const auto status_p = unmanaged( pv.status_p );
 
     Kokkos::parallel_for(
         "mpm::velocity_gradient",
@@ -129,21 +129,22 @@ void velocityGradientCellSums(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
     const WaterGridViews<ExecSpace>& wg, const double water_density,
-    const GridScatter<ExecSpace, CellField::count, Duplication>& sums )
+    const GridScatter<ExecSpace, CellField::count, Duplication>& scatter )
 {
+    const auto sums = scatter.handle();
     const bool two_phase = wv.allocated();
     const auto grid = gv.geometry;
-    const auto v_s_i = gv.v_i;
-    const auto v_w_i = wg.v_w_i;
-    const auto m_w_i = wg.m_w_i;
-    const auto vol_i = wg.vol_i;
-    const auto x_p = pv.x_p;
-    const auto vol_p = pv.vol_p;
-    const auto grad_v_p = pv.grad_v_p;
-    const auto status_p = pv.status_p;
-    const auto div_v_w_p = wv.div_v_w_p;
-    const auto n_p = wv.n_p;
-    const auto S_p = wv.S_p;
+    const auto v_s_i = unmanaged( gv.v_i );
+    const auto v_w_i = unmanaged( wg.v_w_i );
+    const auto m_w_i = unmanaged( wg.m_w_i );
+    const auto vol_i = unmanaged( wg.vol_i );
+    const auto x_p = unmanaged( pv.x_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto grad_v_p = unmanaged( pv.grad_v_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const auto div_v_w_p = unmanaged( wv.div_v_w_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const auto S_p = unmanaged( wv.S_p );
 
     Kokkos::parallel_for(
         "mpm::velocity_gradient_cell_sums",
@@ -190,13 +191,14 @@ template <class ExecSpace, class Duplication>
 void takeCellSums(
     const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
     WaterGridViews<ExecSpace>& wg,
-    const GridScatter<ExecSpace, CellField::count, Duplication>& sums )
+    const GridScatter<ExecSpace, CellField::count, Duplication>& scatter )
 {
+    const auto sums = scatter.handle();
     const bool two_phase = wg.div_w_c.extent( 0 ) > 0;
-    const auto vol_c = gv.vol_c;
-    const auto dvol_c = gv.dvol_c;
-    const auto div_w_c = wg.div_w_c;
-    const auto active_i = gv.active_i;
+    const auto vol_c = unmanaged( gv.vol_c );
+    const auto dvol_c = unmanaged( gv.dvol_c );
+    const auto div_w_c = unmanaged( wg.div_w_c );
+    const auto active_i = unmanaged( gv.active_i );
     const int nx = gv.geometry.nx;
     const int ny = gv.geometry.ny;
 

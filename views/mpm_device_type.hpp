@@ -10,6 +10,26 @@ namespace mpm
 template <class ExecSpace>
 using DeviceType = Kokkos::Device<ExecSpace, typename ExecSpace::memory_space>;
 
+//! The unmanaged alias of a View type: same data, no reference counting.
+template <class ViewType>
+using UnmanagedView =
+    Kokkos::View<typename ViewType::data_type, typename ViewType::array_layout,
+                 typename ViewType::device_type,
+                 Kokkos::MemoryTraits<Kokkos::Unmanaged>>;
+
+/*!
+  \brief The unmanaged alias of `view`, for kernel closures. A launch
+  copies its closure several times and every copy of a managed View costs
+  two atomic reference-count updates: with a few dozen Views per kernel
+  that took a fifth of a step of 40 points. The managed View must outlive
+  the kernel (true for our synchronous host kernels).
+*/
+template <class ViewType>
+UnmanagedView<ViewType> unmanaged( const ViewType& view )
+{
+    return view;
+}
+
 //! Status of a material point.
 enum PointStatus : int
 {

@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace
 {
 namespace fs = std::filesystem;
@@ -38,10 +40,26 @@ class Restart : public ::testing::Test
 };
 TYPED_TEST_SUITE( Restart, mpm_test::Backends, mpm_test::BackendName );
 
+//! Per-process scratch folder (other runs of the suite may be running).
+fs::path scratch()
+{
+    return fs::path( ::testing::TempDir() ) /
+           ( "rainslide_restart_" + std::to_string( ::getpid() ) );
+}
+
+//! Removes the scratch folder when the test binary exits.
+const struct ScratchCleanup
+{
+    ~ScratchCleanup()
+    {
+        std::error_code ignored;
+        fs::remove_all( scratch(), ignored );
+    }
+} scratch_cleanup;
+
 fs::path freshDir( const std::string& name )
 {
-    const fs::path dir =
-        fs::path( ::testing::TempDir() ) / ( "rainslide_restart_" + name );
+    const fs::path dir = scratch() / name;
     fs::remove_all( dir );
     fs::create_directories( dir );
     return dir;
@@ -693,8 +711,7 @@ struct CommandResult
 
 CommandResult runCommand( const std::string& args )
 {
-    const fs::path log =
-        fs::path( ::testing::TempDir() ) / "rainslide_restart_cli.log";
+    const fs::path log = scratch() / "cli.log";
     const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
                                 " > " + log.string() + " 2>&1";
     const int status = std::system( command.c_str() );

@@ -1,0 +1,104 @@
+// The diagnostics a step leaves behind (CFL limit, kinetic energy,
+// stability) and its stored retention state are exactly what the separate
+// reductions and a full retention evaluation give.
+#include <mpm_test_backends.hpp>
+#include <mpm_test_cases.hpp>
+
+#include <solver/mpm_run_stages.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace
+{
+template <class ExecSpace>
+class StepDiagnostics : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( StepDiagnostics, mpm_test::Backends, mpm_test::BackendName );
+
+//! An unsaturated elastic column at 20 kPa suction (van Genuchten) under
+//! sudden gravity, with B-bar if `bbar`.
+mpm::CaseConfig unsaturatedColumn( const bool bbar )
+{
+    mpm::StageConfig stage;
+    stage.name = "gravity";
+    stage.type = mpm::StageType::Dynamic;
+    stage.gravity_m_per_s2 = { 0.0, -9.81 };
+    stage.duration_s = 1.0;
+    auto soil = mpm_test::saturatedMaterial( 1.0e7, 0.3, 2700.0, 0.3, 4.5e-9 );
+    soil.retention.model = mpm::RetentionType::VanGenuchten;
+    soil.retention.alpha_per_pa = 4.4e-4;
+    soil.retention.n = 3.04;
+    soil.retention.residual_saturation = 0.23;
+    auto c = mpm_test::columnCase( 1.0, 0.125, soil, stage );
+    c.analysis = mpm::AnalysisType::Unsaturated;
+    c.bodies[0].initial_pore_pressure_pa = -2.0e4;
+    c.solver.bbar = bbar;
+    return c;
+}
+
+//---------------------------------------------------------------------------//
+TYPED_TEST( StepDiagnostics, cached_values_equal_fresh_reductions )
+{
+    for ( const bool bbar : { false, true } )
+    {
+        const auto config = unsaturatedColumn( bbar );
+        mpm::Simulation<TypeParam> sim( config );
+        const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
+        for ( int k = 0; k < 30; ++k )
+        {
+            const mpm::WaveSpeedLimit limit = sim.waveSpeedLimit();
+            const double dt = 0.5 * limit.dt_limit;
+            sim.advance( dt, settings );
+            sim.checkStability( dt, limit );
+            const mpm::WaveSpeedLimit cached = sim.waveSpeedLimit();
+            const double energy = sim.kineticEnergy();
+            sim.stateChanged(); // forces the separate reductions
+            const mpm::WaveSpeedLimit fresh = sim.waveSpeedLimit();
+            EXPECT_EQ( cached.dt_limit, fresh.dt_limit ) << "step " << k;
+            EXPECT_EQ( cached.max_wave_speed, fresh.max_wave_speed );
+            // Serial sums in the same order; OpenMP may join differently.
+            EXPECT_NEAR( energy, sim.kineticEnergy(),
+                         1e-13 * sim.kineticEnergy() );
+        }
+        EXPECT_GT( sim.kineticEnergy(), 0.0 );
+    }
+}
+
+//---------------------------------------------------------------------------//
+// Reusing the stored retention state (and skipping held points) changes
+// nothing: the run equals one that forgets it every step.
+TYPED_TEST( StepDiagnostics, stored_retention_state_changes_nothing )
+{
+    auto config = unsaturatedColumn( false );
+    // Hold p_w on the top half, as a rainfall boundary holds its points.
+    mpm::PorePressureCondition held;
+    held.points.kind = mpm::PointSelection::Kind::Box;
+    held.points.box_m = { mpm::Point2{ -1.0, 0.5 }, mpm::Point2{ 1.0, 2.0 } };
+    held.pressure_pa = -1.0e4;
+    config.stages[0].pore_pressures = { held };
+    const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
+
+    mpm::Simulation<TypeParam> kept( config );
+    mpm::Simulation<TypeParam> forgot( config );
+    const double dt = 0.5 * kept.waveSpeedLimit().dt_limit;
+    for ( int k = 0; k < 40; ++k )
+    {
+        kept.advance( dt, settings );
+        forgot.advance( dt, settings );
+        forgot.stateChanged();
+    }
+    const auto a = mpm::hostSnapshot( kept );
+    const auto b = mpm::hostSnapshot( forgot );
+    EXPECT_EQ( a.p_w, b.p_w );
+    EXPECT_EQ( a.S, b.S );
+    EXPECT_EQ( a.k_rel, b.k_rel );
+    EXPECT_EQ( a.sigma, b.sigma );
+    EXPECT_EQ( a.x, b.x );
+}
+
+} // namespace
