@@ -27,7 +27,8 @@ mpm::HostSnapshot runShortSlope( const mpm::CaseConfig& config )
 // on this backend agrees with Serial within a relative 1e-10.
 TYPED_TEST( BackendAgreement, total_stress_slope_matches_serial )
 {
-    auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_total_stress.toml" );
+    auto config =
+        mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_total_stress.toml" );
     config.stages[0].duration_s = 0.3;
     config.stages[0].snapshot_interval_s = 0.0;
     const auto serial = runShortSlope<Kokkos::Serial>( config );
