@@ -218,43 +218,63 @@ struct StageConditions
     /*!
       \brief Which points each water inflow feeds, and their volumes, from
       the positions x and status; an inflow that follows the surface gets
-      the horizontal projection of the fed cells as its length.
+      the horizontal projection of the fed cells as its length. With
+      following_only, only the inflows that follow the surface are
+      selected again; the others keep the points chosen at the stage start.
     */
     void assignInflows( const std::vector<double>& x,
-                        const std::vector<int>& status )
+                        const std::vector<int>& status,
+                        const bool following_only = false )
     {
+        auto follows = [&]( const int f )
+        { return inflows[f].follow_surface_interval_s > 0.0; };
         const auto vol_h = Kokkos::create_mirror_view_and_copy(
             Kokkos::HostSpace(), _particles.vol_p );
-        auto inflow_h = Kokkos::create_mirror( _water_particles.inflow_p );
-        Kokkos::deep_copy( inflow_h, -1 );
-        inflow_volumes.assign( inflows.size(), 0.0 );
-        inflow_rate =
-            Kokkos::View<double*, device_type>( "inflow_rate", inflows.size() );
-        inflow_ponding =
-            Kokkos::View<int*, device_type>( "inflow_ponding", inflows.size() );
-        auto ponding_h = Kokkos::create_mirror_view( inflow_ponding );
-        double follow_interval = 1.0e300;
+        auto inflow_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), _water_particles.inflow_p );
+        if ( following_only )
+        {
+            for ( std::size_t p = 0; p < inflow_h.extent( 0 ); ++p )
+                if ( inflow_h( p ) >= 0 && follows( inflow_h( p ) ) )
+                    inflow_h( p ) = -1;
+        }
+        else
+        {
+            Kokkos::deep_copy( inflow_h, -1 );
+            inflow_volumes.assign( inflows.size(), 0.0 );
+            inflow_rate = Kokkos::View<double*, device_type>( "inflow_rate",
+                                                              inflows.size() );
+            inflow_ponding = Kokkos::View<int*, device_type>( "inflow_ponding",
+                                                              inflows.size() );
+            auto ponding_h = Kokkos::create_mirror_view( inflow_ponding );
+            _follow_interval_s = 1.0e300;
+            for ( std::size_t f = 0; f < inflows.size(); ++f )
+            {
+                ponding_h( f ) = inflows[f].ponding ? 1 : 0;
+                if ( follows( f ) )
+                    _follow_interval_s =
+                        std::min( _follow_interval_s,
+                                  inflows[f].follow_surface_interval_s );
+            }
+            Kokkos::deep_copy( inflow_ponding, ponding_h );
+        }
         for ( std::size_t f = 0; f < inflows.size(); ++f )
         {
+            if ( following_only && !follows( f ) )
+                continue;
             const auto picked =
                 selectPoints( inflows[f].points, x, status, _grid );
+            inflow_volumes[f] = 0.0;
             for ( std::size_t p = 0; p < picked.size(); ++p )
                 if ( picked[p] )
                 {
                     inflow_h( p ) = static_cast<int>( f );
                     inflow_volumes[f] += vol_h( p );
                 }
-            ponding_h( f ) = inflows[f].ponding ? 1 : 0;
-            if ( inflows[f].follow_surface_interval_s > 0.0 )
-            {
+            if ( follows( f ) )
                 inflows[f].length_m = horizontalExtent( picked, x, _grid );
-                follow_interval = std::min(
-                    follow_interval, inflows[f].follow_surface_interval_s );
-            }
         }
-        Kokkos::deep_copy( inflow_ponding, ponding_h );
         Kokkos::deep_copy( _water_particles.inflow_p, inflow_h );
-        _follow_interval_s = follow_interval;
     }
 
     //! Re-detects the surface for the inflows that follow it (stage time t).
@@ -267,7 +287,8 @@ struct StageConditions
         assignInflows(
             std::vector<double>( x_h.data(), x_h.data() + x_h.span() ),
             std::vector<int>( status_h.data(),
-                              status_h.data() + status_h.span() ) );
+                              status_h.data() + status_h.span() ),
+            true );
         next_surface_update_s = t + _follow_interval_s;
     }
 

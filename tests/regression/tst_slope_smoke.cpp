@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #ifndef RAINSLIDE_CASES_DIR
 #define RAINSLIDE_CASES_DIR "/work/main/cases"
@@ -117,6 +119,59 @@ TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
     const double expected = 1.0e-4 * 4.0 * 1.0;
     EXPECT_NEAR( added, expected, 0.01 * expected );
     EXPECT_DOUBLE_EQ( sim.conditions.inflows[0].length_m, 4.0 );
+}
+
+/*!
+  When the surface is detected again, only the inflows that follow it are
+  selected again: an inflow on a fixed box keeps the points chosen at the
+  stage start even after every point has moved down by one cell (selected
+  again, the box would hold other points).
+*/
+TYPED_TEST( SlopeSmoke, fixed_inflows_keep_their_points_when_the_surface_moves )
+{
+    mpm::MaterialConfig soil =
+        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
+    soil.retention.model = mpm::RetentionType::VanGenuchten;
+    soil.retention.alpha_per_pa = 4.4e-4;
+    soil.retention.n = 3.04;
+    soil.retention.residual_saturation = 0.23;
+    mpm::StageConfig rain;
+    rain.name = "rain";
+    rain.type = mpm::StageType::Dynamic;
+    rain.duration_s = 1.0;
+    auto config = mpm_test::columnCase( 2.0, 0.25, soil, rain );
+    config.analysis = mpm::AnalysisType::Unsaturated;
+    mpm::WaterInflow fixed;
+    fixed.points.kind = mpm::PointSelection::Kind::Box;
+    fixed.points.box_m = { { { 0.0, 1.0 }, { 0.25, 1.25 } } };
+    fixed.flux_m_per_s = 1.0e-5;
+    mpm::WaterInflow following;
+    following.points.kind = mpm::PointSelection::Kind::SurfaceCells;
+    following.flux_m_per_s = 1.0e-5;
+    following.follow_surface_interval_s = 0.1;
+    config.stages[0].inflows = { fixed, following };
+
+    mpm::Simulation<TypeParam> sim( config );
+    auto inflowOf = [&]()
+    {
+        const auto h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), sim.water_particles.inflow_p );
+        return std::vector<int>( h.data(), h.data() + h.span() );
+    };
+    const std::vector<int> before = inflowOf();
+    ASSERT_EQ( std::count( before.begin(), before.end(), 0 ), 4 );
+    ASSERT_EQ( std::count( before.begin(), before.end(), 1 ), 4 );
+    // Every point one cell lower.
+    auto x_h = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
+                                                    sim.particles.x_p );
+    for ( std::size_t p = 0; p < x_h.extent( 0 ); ++p )
+        x_h( p, 1 ) -= 0.25;
+    Kokkos::deep_copy( sim.particles.x_p, x_h );
+    sim.conditions.update( 0.1 );
+    const std::vector<int> after = inflowOf();
+    for ( std::size_t p = 0; p < before.size(); ++p )
+        EXPECT_EQ( after[p] == 0, before[p] == 0 ) << "point " << p;
+    EXPECT_EQ( std::count( after.begin(), after.end(), 1 ), 4 );
 }
 
 } // namespace
