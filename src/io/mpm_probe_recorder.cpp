@@ -11,6 +11,12 @@ namespace mpm
 namespace
 {
 constexpr double gravity_for_K = 9.81; // m/s^2
+
+//! The first multiple of interval after t (t itself counts as passed).
+double nextMultiple( const double t, const double interval )
+{
+    return interval * ( std::floor( t / interval * ( 1.0 + 1.0e-12 ) ) + 1.0 );
+}
 } // namespace
 
 //---------------------------------------------------------------------------//
@@ -89,11 +95,7 @@ void ProbeRecorder::open( const double resume_time_s )
         _out << line << '\n';
     _out.flush();
     _next_time_s =
-        resume_time_s < 0.0
-            ? 0.0
-            : _interval_s * ( std::floor( resume_time_s / _interval_s *
-                                          ( 1.0 + 1.0e-12 ) ) +
-                              1.0 );
+        resume_time_s < 0.0 ? 0.0 : nextMultiple( resume_time_s, _interval_s );
 }
 
 //---------------------------------------------------------------------------//
@@ -122,10 +124,7 @@ void ProbeRecorder::record( const RunProgress& progress,
              << _K_of_material[snapshot.material[p]] << '\n';
     }
     _out.flush();
-    _next_time_s =
-        _interval_s *
-        ( std::floor( progress.time_s / _interval_s * ( 1.0 + 1.0e-12 ) ) +
-          1.0 );
+    _next_time_s = nextMultiple( progress.time_s, _interval_s );
 }
 
 //---------------------------------------------------------------------------//
