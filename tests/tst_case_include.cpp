@@ -186,4 +186,23 @@ TEST( SlopeCases, parametric_cases_differ_from_the_base_in_one_parameter )
     }
 }
 
+// An empty array in the including file removes an included list: the
+// moving-surface case replaces the base case's p_w = 0 points by rain.
+TEST( SlopeCases, rain_on_the_surface_replaces_the_held_surface_pressure )
+{
+    const auto base =
+        mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_base.toml" );
+    const auto rain =
+        mpm::readCaseFile( RAINSLIDE_CASES_DIR "/slope_rain_surface.toml" );
+    ASSERT_EQ( rain.stages.size(), 2u );
+    EXPECT_EQ( base.stages[1].pore_pressures.size(), 1u );
+    EXPECT_TRUE( rain.stages[1].pore_pressures.empty() );
+    ASSERT_EQ( rain.stages[1].inflows.size(), 1u );
+    EXPECT_DOUBLE_EQ( rain.stages[1].inflows[0].follow_surface_interval_s,
+                      0.1 );
+    // Stage 1 and everything else as in the base case.
+    EXPECT_EQ( rain.stages[0].pore_pressures.size(), 1u );
+    EXPECT_DOUBLE_EQ( rain.stages[1].duration_s, base.stages[1].duration_s );
+}
+
 } // namespace
