@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The whole slope study (docs/slope-study.md): runs every slope case into
-# results/<case>/, draws each case's figures and the summary across cases.
-#   scripts/slope_study.sh             all cases (the refined base case last)
+# results/<case>/, draws each case's figures and the summary across cases
+# (results/slope_summary.png and the table results/slope_summary.md).
+#   scripts/slope_study.sh             all cases (the refined base case last;
+#                                      slope_base_paper_dt, the paper's time
+#                                      step, only when named in SLOPE_CASES)
 #   SLOPE_CASES="slope_base slope_phi30" scripts/slope_study.sh
 # Extra arguments go to every `rainslide run` (e.g. --threads 2).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -9,7 +12,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 bootstrap
 build_release
 cd "$RAINSLIDE_ROOT"
-cases=${SLOPE_CASES:-"slope_total_stress slope_base slope_phi15 slope_phi30 slope_cr001 slope_cr5 slope_rain_surface slope_base_fine"}
+cases=${SLOPE_CASES:-"slope_total_stress slope_base slope_base_sudden slope_phi15 slope_phi30 slope_cr001 slope_cr5 slope_rain_surface slope_base_fine"}
 dirs=()
 for case in $cases; do
     echo "== $case" >&2
@@ -19,5 +22,6 @@ for case in $cases; do
     "$PYTHON" scripts/slope_figures.py "results/$case" "${times[@]}"
     dirs+=("results/$case")
 done
-"$PYTHON" scripts/slope_summary.py "${dirs[@]}" --out results/slope_summary.png
-echo "summary: results/slope_summary.png" >&2
+"$PYTHON" scripts/slope_summary.py "${dirs[@]}" --out results/slope_summary.png \
+    --table results/slope_summary.md
+echo "summary: results/slope_summary.png, results/slope_summary.md" >&2

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Summary plot across slope runs: sliding area and run-out against stage time.
 
-Usage: slope_summary.py DIR1 [DIR2 ...] --out FILE.png [--recompute] [--stage NAME]
+Usage: slope_summary.py DIR1 [DIR2 ...] --out FILE.png [--table FILE.md]
+                        [--recompute] [--stage NAME]
 
 Per DIR, the series come from the "slope" key of DIR/metrics.json (written by
 slope_metrics.py); a DIR without it (or with --recompute) is analysed from
@@ -9,6 +10,9 @@ DIR/particles.h5 with slope_metrics' defaults (metrics.json is not changed).
 One line per case, labelled with metrics.json "case"; the first failure is
 marked with a dot. Run-out is the largest x of a sliding point minus the toe x
 (negative while the sliding mass has not passed the toe).
+--table also writes a Markdown table, one row per case: first failure, later
+slides, final sliding area, run-out and maximum displacement, how the run
+ended, steps, wall time, threads and MP-updates/s (from metrics.json).
 Errors in the input give one line "slope_summary: error: ..." and exit code 2.
 """
 import argparse
@@ -44,11 +48,36 @@ def case_series(run_dir, recompute=False, stage=None, toe_x=sm.DEFAULT_TOE_X, op
     return str(metrics["case"]), slope
 
 
+def fmt(value, digits=1):
+    """A number for the table ('–' if missing)."""
+    return "–" if value is None else f"{value:.{digits}f}"
+
+
+def table_row(label, slope, metrics):
+    """One Markdown row of --table."""
+    final = slope.get("final") or {}
+    later = [f"{sl['time_s']:g}" for sl in slope.get("slides", [])[1:]]
+    stage = next((st for st in metrics.get("stages", []) if st.get("name") == slope.get("stage")), {})
+    ended = f"{stage.get('stop_reason', '?')} at {fmt(stage.get('duration_s'), 2)} s"
+    threads = metrics.get("threads")
+    backend = f"{metrics.get('backend', '?')} {threads}T" if threads else metrics.get("backend", "?")
+    return (f"| `{label}` | {fmt(slope.get('first_failure_time_s'), 2)} | {', '.join(later) or '–'} | "
+            f"{fmt(final.get('sliding_area_m2'), 0)} | {fmt(final.get('run_out_m'))} | "
+            f"{fmt(final.get('max_displacement_m'))} | {ended} | {metrics.get('steps', '–')} | "
+            f"{fmt(metrics.get('wall_s'), 0)} ({backend}) | {fmt((metrics.get('mp_updates_per_s') or 0) / 1e6, 2)} |")
+
+
+TABLE_HEADER = ("| case | first failure (s) | later slides (s) | final sliding area (m²) | run-out (m) "
+                "| max displacement (m) | stage ended | steps | wall (s) | MP-updates/s (millions) |\n"
+                "|---|--:|---|--:|--:|--:|---|--:|--:|--:|\n")
+
+
 def main(argv=None):
     signal.signal(signal.SIGPIPE, signal.SIG_DFL)
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("dirs", nargs="+", help="results folders")
     p.add_argument("--out", required=True, help="output PNG")
+    p.add_argument("--table", help="also write a Markdown table of the cases to this file")
     p.add_argument("--recompute", action="store_true",
                    help="analyse particles.h5 even where metrics.json has a 'slope' key")
     sm.add_options(p)
@@ -92,6 +121,11 @@ def main(argv=None):
             raise sm.InputError(f"{out_dir}: output folder not found")
         fig.savefig(args.out, dpi=110)
         plt.close(fig)
+        if args.table:
+            rows = [table_row(label, slope, sm.read_metrics(d, required=True))
+                    for (label, slope), d in zip(cases, args.dirs)]
+            with open(args.table, "w") as f:
+                f.write(TABLE_HEADER + "\n".join(rows) + "\n")
     except sm.InputError as e:
         print(f"slope_summary: error: {e}", file=sys.stderr)
         return 2

@@ -194,6 +194,21 @@ enum class StageType
 
 //! One analysis stage. Materials and boundaries are the effective ones of
 //! this stage: the case-level definitions with this stage's overrides applied.
+/*!
+  \brief Ends a dynamic stage once the bodies are static again: after a
+  slide (a point has moved farther than slide_displacement_m from its
+  reference position), every point has stayed slower than
+  static_speed_m_per_s for window_s. A stage without a slide runs for its
+  duration.
+*/
+struct StaticStop
+{
+    double static_speed_m_per_s = 0.0; //!< 0: no static stop
+    double slide_displacement_m = 0.5;
+    double window_s = 1.0;
+    bool enabled() const { return static_speed_m_per_s > 0.0; }
+};
+
 struct StageConfig
 {
     std::string name;
@@ -205,6 +220,8 @@ struct StageConfig
     double duration_s = 0.0;
     //! Quasi-static: stop when E_kin / max(E_kin over the stage) < this.
     double ke_ratio_tolerance = 1.0e-4;
+    //! Dynamic: optional stop once the bodies are static again.
+    StaticStop static_stop;
     //! Snapshot every this many seconds of stage time (0: only at stage end).
     double snapshot_interval_s = 0.0;
     //! Further snapshots at these stage times (s, increasing); steps are

@@ -26,8 +26,10 @@ struct GridGeometry
     KOKKOS_INLINE_FUNCTION bool cellOf( const double x, const double y, int& ci,
                                         int& cj ) const
     {
-        const double gx = ( x - x0 ) / h;
-        const double gy = ( y - y0 ) / h;
+        // The same expressions as weights(), so both agree on the cell.
+        const double inv_h = 1.0 / h;
+        const double gx = ( x - x0 ) * inv_h;
+        const double gy = ( y - y0 ) * inv_h;
         if ( !( gx >= 0.0 && gy >= 0.0 && gx < nx && gy < ny ) )
             return false;
         ci = static_cast<int>( gx );
@@ -44,8 +46,9 @@ struct GridGeometry
                                          int& ci, int& cj, double w[4],
                                          double dwdx[4], double dwdy[4] ) const
     {
-        const double gx = ( x - x0 ) / h;
-        const double gy = ( y - y0 ) / h;
+        const double inv_h = 1.0 / h; // one division instead of four
+        const double gx = ( x - x0 ) * inv_h;
+        const double gy = ( y - y0 ) * inv_h;
         ci = static_cast<int>( gx );
         cj = static_cast<int>( gy );
         // Clamp points on the far edges into the last cell.
@@ -55,7 +58,7 @@ struct GridGeometry
         const double eta = gy - cj;
         const double wx[2] = { 1.0 - xi, xi };
         const double wy[2] = { 1.0 - eta, eta };
-        const double gxw[2] = { -1.0 / h, 1.0 / h };
+        const double gxw[2] = { -inv_h, inv_h };
         for ( int b = 0; b < 2; ++b )
             for ( int a = 0; a < 2; ++a )
             {

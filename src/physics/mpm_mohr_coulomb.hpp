@@ -65,7 +65,9 @@ KOKKOS_INLINE_FUNCTION PrincipalStress principalStress( const double s[4] )
     PrincipalStress p;
     const double center = 0.5 * ( s[0] + s[1] );
     const double half_diff = 0.5 * ( s[0] - s[1] );
-    const double radius = Kokkos::Experimental::hypot( half_diff, s[2] );
+    // sqrt, not hypot: stresses are far from overflow, and hypot is slow.
+    const double radius =
+        Kokkos::Experimental::sqrt( half_diff * half_diff + s[2] * s[2] );
     p.cos_2theta = radius > 0.0 ? half_diff / radius : 1.0;
     p.sin_2theta = radius > 0.0 ? s[2] / radius : 0.0;
     const double in_plane[3] = { center + radius, center - radius, s[3] };

@@ -39,10 +39,14 @@ nlohmann::json deformationMetrics( const HostSnapshot& snapshot,
 
 nlohmann::json stageMetrics( const StageSummary& stage )
 {
-    nlohmann::json j = {
-        { "name", stage.name },         { "type", stage.type },
-        { "steps", stage.steps },       { "duration_s", stage.duration_s },
-        { "dt_min_s", stage.dt_min_s }, { "dt_max_s", stage.dt_max_s } };
+    nlohmann::json j = { { "name", stage.name },
+                         { "type", stage.type },
+                         { "steps", stage.steps },
+                         { "duration_s", stage.duration_s },
+                         { "dt_min_s", stage.dt_min_s },
+                         { "dt_max_s", stage.dt_max_s },
+                         { "stop_reason", stage.stop_reason },
+                         { "max_speed_m_per_s", stage.max_speed_m_per_s } };
     if ( stage.type == "quasi_static" )
     {
         j["ke_ratio"] = stage.ke_ratio;

@@ -108,6 +108,8 @@ void ProgressPrinter::stageEnd( const RunProgress& progress,
         std::fprintf( stderr, ", kinetic-energy ratio %.3g (%s)",
                       summary.ke_ratio,
                       summary.converged ? "converged" : "NOT converged" );
+    else if ( summary.stop_reason == "static_again" )
+        std::fprintf( stderr, ", static again" );
     std::fprintf( stderr, ", %d active points\n", progress.active_points );
 }
 

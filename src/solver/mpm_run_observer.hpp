@@ -35,6 +35,10 @@ struct StageSummary
     //! Quasi-static: final E_kin / max E_kin, and whether it met the tolerance.
     double ke_ratio = 0.0;
     bool converged = true;
+    //! Why the stage ended: "duration", "kinetic_energy_ratio" (quasi-static
+    //! converged), "static_again" (StaticStop) or "interrupted".
+    std::string stop_reason = "duration";
+    double max_speed_m_per_s = 0.0; //!< largest point speed in the stage
 };
 
 //! Host copies of every particle field, point-major.

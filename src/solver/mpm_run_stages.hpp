@@ -82,6 +82,31 @@ inline double chooseTimeStep( const SolverConfig& solver,
 }
 
 //---------------------------------------------------------------------------//
+/*!
+  \brief Static stop of a dynamic stage: updates the state with this step's
+  largest point speed and returns true once the stage should end (a slide,
+  then every point slower than the static speed for the window).
+  maxDisplacement() gives the largest point displacement; it is called only
+  until a slide has been seen.
+*/
+template <class MaxDisplacement>
+bool staticAgain( const StaticStop& stop, const double max_speed,
+                  const double stage_time_s, MaxDisplacement&& maxDisplacement,
+                  StageLoopState& state )
+{
+    if ( !state.has_moved && maxDisplacement() > stop.slide_displacement_m )
+        state.has_moved = true;
+    if ( !state.has_moved || !( max_speed < stop.static_speed_m_per_s ) )
+    {
+        state.static_since = -1.0;
+        return false;
+    }
+    if ( state.static_since < 0.0 )
+        state.static_since = stage_time_s;
+    return stage_time_s - state.static_since >= stop.window_s;
+}
+
+//---------------------------------------------------------------------------//
 //! Stage times at which snapshots are due: multiples of the interval and the
 //! listed times, before the stage end (which always gets one).
 class SnapshotSchedule
@@ -214,6 +239,7 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 Checkpoint checkpoint = captureCheckpoint( sim, config, state );
                 observer.onCheckpoint( checkpoint );
                 summary.interrupted = true;
+                stage_summary.stop_reason = "interrupted";
                 break;
             }
             if ( checkpointDue( config.solver, state, sim.time ) )
@@ -244,6 +270,9 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             progress.active_points = sim.numActivePoints();
             stage_summary.dt_min_s = std::min( stage_summary.dt_min_s, dt );
             stage_summary.dt_max_s = std::max( stage_summary.dt_max_s, dt );
+            const double max_speed = sim.maxPointSpeed();
+            stage_summary.max_speed_m_per_s =
+                std::max( stage_summary.max_speed_m_per_s, max_speed );
             observer.onStep( progress );
             if ( progress.time_s >= observer.nextSampleTime() )
                 observer.onSample( progress, hostSnapshot( sim ) );
@@ -272,8 +301,17 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                      progress.stage_time_s - state.below_since >= window_s )
                 {
                     stage_summary.converged = true;
+                    stage_summary.stop_reason = "kinetic_energy_ratio";
                     break;
                 }
+            }
+            else if ( stage.static_stop.enabled() &&
+                      staticAgain(
+                          stage.static_stop, max_speed, progress.stage_time_s,
+                          [&sim]() { return sim.maxDisplacement(); }, state ) )
+            {
+                stage_summary.stop_reason = "static_again";
+                break;
             }
         }
 

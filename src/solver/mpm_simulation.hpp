@@ -196,6 +196,20 @@ class Simulation
                    : mpm::kineticEnergy( ExecSpace(), particles );
     }
 
+    //! Largest solid speed of the active points, m/s (maxPointSpeed).
+    double maxPointSpeed() const
+    {
+        return diagnosticsCurrent()
+                   ? std::sqrt( _diagnostics.max_speed2 )
+                   : mpm::maxPointSpeed( ExecSpace(), particles );
+    }
+
+    //! Largest displacement |x - x0| of the active points, m.
+    double maxDisplacement() const
+    {
+        return mpm::maxDisplacement( ExecSpace(), particles );
+    }
+
     /*!
       \brief Declares the point state changed outside advance (fields
       written directly): the step's diagnostics and the stored retention

@@ -49,6 +49,11 @@ struct StageLoopState
     double ke_max = 0.0;        //!< largest kinetic energy of the stage, J
     //! Stage time since which E_kin / ke_max is below the tolerance, or -1.
     double below_since = -1.0;
+    //! Static stop: a point has moved farther than the slide displacement.
+    bool has_moved = false;
+    //! Static stop: stage time since which all points are slower than the
+    //! static speed (after moving), or -1.
+    double static_since = -1.0;
     double next_snapshot_s = 0.0;   //!< stage time of the next snapshot
     double next_checkpoint_s = 0.0; //!< run time of the next checkpoint
     RunSummary run;                 //!< finished stages and totals
@@ -72,6 +77,8 @@ struct StageLoopState
         stage_summary.converged = !quasi_static;
         ke_max = 0.0;
         below_since = -1.0;
+        has_moved = false;
+        static_since = -1.0;
         next_snapshot_s = first_snapshot_s;
     }
 };
@@ -89,6 +96,8 @@ void visitStageSummary( Summary& s, F&& f )
     f( "dt_max_s", s.dt_max_s );
     f( "ke_ratio", s.ke_ratio );
     f( "converged", s.converged );
+    f( "stop_reason", s.stop_reason );
+    f( "max_speed_m_per_s", s.max_speed_m_per_s );
 }
 
 //! Calls f(name, field) for every field of a RunProgress.
@@ -135,6 +144,8 @@ void visitStageLoopState( State& s, F&& f )
                        { f( "stage_summary." + name, value ); } );
     f( "ke_max", s.ke_max );
     f( "below_since", s.below_since );
+    f( "has_moved", s.has_moved );
+    f( "static_since", s.static_since );
     f( "next_snapshot_s", s.next_snapshot_s );
     f( "next_checkpoint_s", s.next_checkpoint_s );
     visitRunSummary( s.run, [&]( const std::string& name, auto& value )

@@ -271,10 +271,18 @@ class SlopeMetricsTest(unittest.TestCase):
             self.assertTrue(os.path.isfile(path), name)
             self.assertLess(os.path.getsize(path), 400 * 1024, name)
         png = os.path.join(self.tmp.name, "summary.png")
+        table = os.path.join(self.tmp.name, "summary.md")
         out = subprocess.run([PYTHON, os.path.join(SCRIPTS, "slope_summary.py"), self.dir,
-                              "--out", png], capture_output=True, text=True)
+                              "--out", png, "--table", table, "--toe-x", "18"],
+                             capture_output=True, text=True)
         self.assertEqual(out.returncode, 0, out.stderr)
         self.assertTrue(os.path.isfile(png))
+        with open(table) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(len(rows), 3)  # header, rule, one case
+        cells = [c.strip() for c in rows[2].strip("|").split("|")]
+        self.assertEqual(cells[1], "4.00")  # first failure
+        self.assertEqual(cells[2], "7")     # the detached slide
 
 
 if __name__ == "__main__":

@@ -1,0 +1,122 @@
+#include <mpm_test_backends.hpp>
+#include <mpm_test_cases.hpp>
+
+#include <solver/mpm_run_stages.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+//---------------------------------------------------------------------------//
+// The stop rule on a given history: nothing before a point has slid, then
+// the window counts from the last step above the static speed.
+TEST( StaticAgain, waits_for_a_slide_then_for_the_window )
+{
+    mpm::StaticStop stop;
+    stop.static_speed_m_per_s = 0.01;
+    stop.slide_displacement_m = 0.5;
+    stop.window_s = 1.0;
+    mpm::StageLoopState state;
+    double displacement = 0.0;
+    int displacement_calls = 0;
+    auto maxDisplacement = [&]()
+    {
+        ++displacement_calls;
+        return displacement;
+    };
+    auto step = [&]( const double speed, const double t )
+    { return mpm::staticAgain( stop, speed, t, maxDisplacement, state ); };
+    // At rest from the start, or a fast transient without a slide: no stop.
+    EXPECT_FALSE( step( 0.0, 0.0 ) );
+    EXPECT_FALSE( step( 0.3, 1.0 ) );
+    EXPECT_FALSE( step( 0.0, 5.0 ) );
+    displacement = 0.2; // creep
+    EXPECT_FALSE( step( 0.005, 6.0 ) );
+    EXPECT_FALSE( state.has_moved );
+    // A slide, then it slows down.
+    displacement = 2.0;
+    EXPECT_FALSE( step( 1.5, 7.0 ) );
+    EXPECT_TRUE( state.has_moved );
+    const int calls_at_slide = displacement_calls;
+    EXPECT_FALSE( step( 0.005, 8.0 ) );
+    EXPECT_FALSE( step( 0.005, 8.9 ) );
+    // A jolt restarts the window.
+    EXPECT_FALSE( step( 0.02, 9.0 ) );
+    EXPECT_FALSE( step( 0.005, 9.5 ) );
+    EXPECT_FALSE( step( 0.005, 10.4 ) );
+    EXPECT_TRUE( step( 0.005, 10.5 ) );
+    // The displacement is not evaluated again after the slide.
+    EXPECT_EQ( displacement_calls, calls_at_slide );
+}
+
+template <class ExecSpace>
+class StaticStop : public ::testing::Test
+{
+};
+TYPED_TEST_SUITE( StaticStop, mpm_test::Backends, mpm_test::BackendName );
+
+//! A dynamic stage of an elastic column (4 m, E = 1e8 Pa) under gravity.
+mpm::CaseConfig dampedColumn( const double gravity, const double duration_s )
+{
+    mpm::StageConfig stage;
+    stage.name = "drop";
+    stage.type = mpm::StageType::Dynamic;
+    stage.gravity_m_per_s2 = { 0.0, -gravity };
+    stage.damping = 0.2;
+    stage.duration_s = duration_s;
+    // The dynamic overshoot (2 x the static settlement of 1.2 mm) counts
+    // as the "slide".
+    stage.static_stop.static_speed_m_per_s = 1.0e-4;
+    stage.static_stop.slide_displacement_m = 1.5e-3;
+    stage.static_stop.window_s = 0.1;
+    return mpm_test::columnCase(
+        4.0, 0.1, mpm_test::elasticMaterial( 1.0e8, 0.3, 2000.0 ), stage );
+}
+
+//---------------------------------------------------------------------------//
+// Gravity switched on suddenly sets the column ringing (largest speed about
+// g H / c = 0.15 m/s); the damped ringing dies out and the stage ends
+// static, at the elastic settlement rho g H^2 / (2 E_c).
+TYPED_TEST( StaticStop, damped_column_stops_once_static_at_its_settlement )
+{
+    const double duration_s = 20.0;
+    auto config = dampedColumn( 9.81, duration_s );
+    mpm::Simulation<TypeParam> sim( config );
+    mpm::RunObserver observer;
+    const auto summary = mpm::runStages( sim, config, observer );
+    const auto& stage = summary.stages.at( 0 );
+    EXPECT_EQ( stage.stop_reason, "static_again" );
+    EXPECT_LT( stage.duration_s, 0.5 * duration_s );
+    EXPECT_GT( stage.max_speed_m_per_s, 0.05 );
+    EXPECT_LT( stage.max_speed_m_per_s, 0.5 );
+    EXPECT_LT( sim.maxPointSpeed(), 1.0e-4 );
+
+    const double E = 1.0e8, nu = 0.3, H = 4.0;
+    const double E_c = E * ( 1 - nu ) / ( ( 1 + nu ) * ( 1 - 2 * nu ) );
+    const double settlement = 2000.0 * 9.81 * H * H / ( 2.0 * E_c );
+    const auto snap = mpm::hostSnapshot( sim );
+    double top_settlement = 0.0;
+    double top_y = 0.0;
+    for ( int p = 0; p < snap.num_points; ++p )
+        if ( snap.x[2 * p + 1] > top_y )
+        {
+            top_y = snap.x[2 * p + 1];
+            top_settlement = -snap.displacement[2 * p + 1];
+        }
+    EXPECT_NEAR( top_settlement, settlement, 0.03 * settlement );
+}
+
+// Without a load nothing slides: the stage runs for its whole duration.
+TYPED_TEST( StaticStop, stage_at_rest_runs_its_duration )
+{
+    auto config = dampedColumn( 0.0, 0.05 );
+    mpm::Simulation<TypeParam> sim( config );
+    mpm::RunObserver observer;
+    const auto summary = mpm::runStages( sim, config, observer );
+    EXPECT_EQ( summary.stages.at( 0 ).stop_reason, "duration" );
+    EXPECT_NEAR( summary.stages.at( 0 ).duration_s, 0.05, 1.0e-12 );
+}
+
+} // namespace
