@@ -94,30 +94,37 @@ double kineticEnergy( const ExecSpace& exec_space,
 }
 
 //---------------------------------------------------------------------------//
+//! sqrt of the largest length2(p) over the active points.
+template <class ExecSpace, class Length2>
+double maxLengthOverActivePoints( const ExecSpace& exec_space,
+                                  const char* label,
+                                  const ParticleViews<ExecSpace>& pv,
+                                  const Length2& length2 )
+{
+    const auto status_p = unmanaged( pv.status_p );
+    double max_length2 = 0.0;
+    Kokkos::parallel_reduce(
+        label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& max2 ) {
+            if ( status_p( p ) == point_active && length2( p ) > max2 )
+                max2 = length2( p );
+        },
+        Kokkos::Max<double>( max_length2 ) );
+    return Kokkos::Experimental::sqrt( max_length2 );
+}
+
 //! Largest solid speed |v_p| over the active points, m/s.
 template <class ExecSpace>
 double maxPointSpeed( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
     const auto v_p = unmanaged( pv.v_p );
-    const auto status_p = unmanaged( pv.status_p );
-    double max_speed2 = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::max_point_speed",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& max2 ) {
-            if ( status_p( p ) != point_active )
-                return;
-            const double speed2 =
-                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
-            if ( speed2 > max2 )
-                max2 = speed2;
-        },
-        Kokkos::Max<double>( max_speed2 ) );
-    return Kokkos::Experimental::sqrt( max_speed2 );
+    return maxLengthOverActivePoints(
+        exec_space, "mpm::max_point_speed", pv, KOKKOS_LAMBDA( const int p ) {
+            return v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
+        } );
 }
 
-//---------------------------------------------------------------------------//
 //! Largest displacement |x_p - x0_p| over the active points, m.
 template <class ExecSpace>
 double maxDisplacement( const ExecSpace& exec_space,
@@ -125,21 +132,12 @@ double maxDisplacement( const ExecSpace& exec_space,
 {
     const auto x_p = unmanaged( pv.x_p );
     const auto x0_p = unmanaged( pv.x0_p );
-    const auto status_p = unmanaged( pv.status_p );
-    double max_u2 = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::max_displacement",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& max2 ) {
-            if ( status_p( p ) != point_active )
-                return;
+    return maxLengthOverActivePoints(
+        exec_space, "mpm::max_displacement", pv, KOKKOS_LAMBDA( const int p ) {
             const double u_x = x_p( p, 0 ) - x0_p( p, 0 );
             const double u_y = x_p( p, 1 ) - x0_p( p, 1 );
-            if ( u_x * u_x + u_y * u_y > max2 )
-                max2 = u_x * u_x + u_y * u_y;
-        },
-        Kokkos::Max<double>( max_u2 ) );
-    return Kokkos::Experimental::sqrt( max_u2 );
+            return u_x * u_x + u_y * u_y;
+        } );
 }
 
 //---------------------------------------------------------------------------//

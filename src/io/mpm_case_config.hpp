@@ -252,7 +252,9 @@ struct SolverConfig
     double courant_number = 0.5;
     //! Fixed time step; 0 selects the automatic (CFL) step.
     double dt_s = 0.0;
-    //! FLIP fraction of the FLIP/PIC blend (1 = pure FLIP, 0 = pure PIC).
+    //! FLIP fraction of the FLIP/PIC blend (1 = pure FLIP, 0 = pure PIC) at
+    //! a step of the CFL limit; smaller steps blend proportionally less PIC
+    //! (Simulation::stepFlipFraction).
     double flip_fraction = 0.99;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;

@@ -240,6 +240,22 @@ class Simulation
     //! True if _diagnostics describe the current state.
     bool diagnosticsCurrent() const { return _diagnostics_step == step; }
 
+    /*!
+      \brief FLIP fraction of a step of size dt: solver.flip_fraction at a
+      step of the CFL limit, and proportionally less PIC at smaller steps,
+      1 - (1 - flip) min(1, dt / limit). The PIC part damps every step (the
+      water's flow relative to the solid too), so a fixed blend would damp
+      more per second the smaller the step: a wetting column took up 25 %
+      less water at a twentieth of the step. Scaled, the damping per second
+      does not depend on the step.
+    */
+    double stepFlipFraction( const double dt ) const
+    {
+        const double limit = waveSpeedLimit().dt_limit;
+        const double ratio = limit > 0.0 && dt < limit ? dt / limit : 1.0;
+        return 1.0 - ( 1.0 - solver.flip_fraction ) * ratio;
+    }
+
     //! B-bar: the cell averages of the step's velocity gradients.
     void cellAverages( const ExecSpace& exec )
     {
@@ -262,7 +278,7 @@ class Simulation
                                   conditions.load_force, _dry_sums );
         gridUpdateDry( exec, grid, _dry_sums, dt, settings.damping,
                        solver.inertia_scaling );
-        g2pVelocityRemap( exec, particles, grid, dt, solver.flip_fraction,
+        g2pVelocityRemap( exec, particles, grid, dt, stepFlipFraction( dt ),
                           _dry_momentum );
         remapVelocity( exec, grid, _dry_momentum );
         if ( solver.bbar )
@@ -285,7 +301,7 @@ class Simulation
                             settings.damping, water.density, water.viscosity,
                             solver.inertia_scaling );
         g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
-                                  water_grid, dt, solver.flip_fraction,
+                                  water_grid, dt, stepFlipFraction( dt ),
                                   water.density, _two_phase_momentum );
         remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum );
         if ( solver.bbar )

@@ -1,4 +1,6 @@
 // End-to-end tests of the rainslide CLI: exit codes, messages, output files.
+#include <mpm_test_cli.hpp>
+
 #include <hdf5.h>
 
 #include <gtest/gtest.h>
@@ -16,22 +18,13 @@ namespace
 {
 namespace fs = std::filesystem;
 
-struct CommandResult
-{
-    int exit_code;
-    std::string output; //!< stdout and stderr
-};
+using mpm_test::CommandResult;
+using mpm_test::writeCase;
 
 CommandResult runCommand( const std::string& args )
 {
-    const fs::path log = fs::path( ::testing::TempDir() ) / "rainslide_cli.log";
-    const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
-                                " > " + log.string() + " 2>&1";
-    const int status = std::system( command.c_str() );
-    std::ifstream in( log );
-    std::stringstream text;
-    text << in.rdbuf();
-    return { WEXITSTATUS( status ), text.str() };
+    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
+                                             "rainslide_cli.log" );
 }
 
 fs::path freshDir( const std::string& name )
@@ -43,45 +36,18 @@ fs::path freshDir( const std::string& name )
     return dir;
 }
 
-//! A 1 m x 2 m elastic block on a fixed base, with `extra` appended.
+//! The test block (mpm_test::blockCaseText) with one dynamic stage of 0.2 s;
+//! `stage_extra` is appended to the stage.
 std::string blockCase( const std::string& solver_extra,
                        const std::string& stage_extra )
 {
-    return R"(
-[case]
-name = "block"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.25
-cells = [8, 12]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e6
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[solver]
-)" + solver_extra +
-           R"(
+    return mpm_test::blockCaseText( solver_extra, R"(
 [[stages]]
 name = "load"
 type = "dynamic"
 duration_s = 0.2
 snapshot_interval_s = 0.05
-)" + stage_extra;
-}
-
-fs::path writeCase( const fs::path& dir, const std::string& text )
-{
-    const fs::path file = dir / "case.toml";
-    std::ofstream( file ) << text;
-    return file;
+)" + stage_extra );
 }
 
 int countSnapshots( const fs::path& h5 )

@@ -1,5 +1,6 @@
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
+#include <mpm_test_water.hpp>
 
 #include <solver/mpm_run_stages.hpp>
 
@@ -13,14 +14,7 @@ class Inflow : public ::testing::Test
 };
 TYPED_TEST_SUITE( Inflow, mpm_test::Backends, mpm_test::BackendName );
 
-//! Water volume sum n S V of the points, m^3 per metre.
-double waterVolume( const mpm::HostSnapshot& snap )
-{
-    double volume = 0.0;
-    for ( int p = 0; p < snap.num_points; ++p )
-        volume += snap.n[p] * snap.S[p] * snap.vol[p];
-    return volume;
-}
+using mpm_test::waterVolume;
 
 /*!
   Rainfall as a prescribed inflow flux: a sealed (all grid edges

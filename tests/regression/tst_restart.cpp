@@ -3,6 +3,7 @@
 // checkpoints of another case are refused; the file is written atomically.
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
+#include <mpm_test_cli.hpp>
 
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_case_reader.hpp>
@@ -622,44 +623,24 @@ TYPED_TEST( Restart, checkpoint_of_another_case_is_refused )
                                                              << why;
 }
 
-//! A small dry case file; `extra` is appended to [solver].
+//! The test block (mpm_test::blockCaseText) with two dynamic stages, the
+//! first `duration_s` long.
 std::string blockCase( const std::string& solver_extra,
                        const double duration_s = 0.2 )
 {
-    return R"(
-[case]
-name = "block"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.25
-cells = [8, 12]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e6
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[solver]
-)" + solver_extra +
-           R"(
+    return mpm_test::blockCaseText( solver_extra, R"(
 [[stages]]
 name = "load"
 type = "dynamic"
-duration_s = )" +
-           std::to_string( duration_s ) + R"(
+duration_s = )" + std::to_string( duration_s ) +
+                                                      R"(
 snapshot_interval_s = 0.05
 [[stages]]
 name = "more"
 type = "dynamic"
 duration_s = 0.1
 snapshot_interval_s = 0.05
-)";
+)" );
 }
 
 // The case's keys identify it: a changed value is refused and named; a
@@ -703,22 +684,11 @@ TEST( RestartFile, changed_case_file_is_refused_with_the_key )
 // The CLI: `run --stop-after-steps` stops like Ctrl-C (checkpoint, exit
 // 130, how to resume); `run --restart` continues; the particle file, its
 // XDMF and the metrics equal those of an uninterrupted run.
-struct CommandResult
-{
-    int exit_code;
-    std::string output;
-};
+using mpm_test::CommandResult;
 
 CommandResult runCommand( const std::string& args )
 {
-    const fs::path log = scratch() / "cli.log";
-    const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
-                                " > " + log.string() + " 2>&1";
-    const int status = std::system( command.c_str() );
-    std::ifstream in( log );
-    std::stringstream text;
-    text << in.rdbuf();
-    return { WEXITSTATUS( status ), text.str() };
+    return mpm_test::runRainslide( args, scratch() / "cli.log" );
 }
 
 std::string readText( const fs::path& file )

@@ -4,6 +4,7 @@
 // surface's horizontal projection.
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
+#include <mpm_test_water.hpp>
 
 #include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
@@ -26,14 +27,7 @@ class SlopeSmoke : public ::testing::Test
 };
 TYPED_TEST_SUITE( SlopeSmoke, mpm_test::Backends, mpm_test::BackendName );
 
-//! Water volume sum n S V of the points, m^3 per metre.
-double waterVolume( const mpm::HostSnapshot& snap )
-{
-    double volume = 0.0;
-    for ( int p = 0; p < snap.num_points; ++p )
-        volume += snap.n[p] * snap.S[p] * snap.vol[p];
-    return volume;
-}
+using mpm_test::waterVolume;
 
 /*!
   cases/slope_base.toml on 1 m cells, 1 s of its gravity and suction stage

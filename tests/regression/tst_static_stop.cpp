@@ -106,6 +106,13 @@ TYPED_TEST( StaticStop, damped_column_stops_once_static_at_its_settlement )
             top_settlement = -snap.displacement[2 * p + 1];
         }
     EXPECT_NEAR( top_settlement, settlement, 0.03 * settlement );
+    // The reductions behind the stop: the largest displacement is the top's
+    // settlement; the point-speed reduction agrees with the step's.
+    EXPECT_NEAR( sim.maxDisplacement(), top_settlement,
+                 1.0e-3 * top_settlement );
+    const double speed_of_step = sim.maxPointSpeed();
+    sim.stateChanged();
+    EXPECT_NEAR( sim.maxPointSpeed(), speed_of_step, 1.0e-9 );
 }
 
 // Without a load nothing slides: the stage runs for its whole duration.

@@ -1,0 +1,78 @@
+#ifndef MPM_TEST_CLI_HPP
+#define MPM_TEST_CLI_HPP
+
+// Helpers of the tests that run the rainslide binary (RAINSLIDE_BINARY).
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace mpm_test
+{
+//! Exit code and output of one command.
+struct CommandResult
+{
+    int exit_code;
+    std::string output; //!< stdout and stderr
+};
+
+//! Runs `rainslide <args>`, its stdout and stderr going through `log`.
+inline CommandResult runRainslide( const std::string& args,
+                                   const std::filesystem::path& log )
+{
+    const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
+                                " > " + log.string() + " 2>&1";
+    const int status = std::system( command.c_str() );
+    std::ifstream in( log );
+    std::stringstream text;
+    text << in.rdbuf();
+    return { WEXITSTATUS( status ), text.str() };
+}
+
+//! Writes `text` to dir/case.toml and returns its path.
+inline std::filesystem::path writeCase( const std::filesystem::path& dir,
+                                        const std::string& text )
+{
+    const std::filesystem::path file = dir / "case.toml";
+    std::ofstream( file ) << text;
+    return file;
+}
+
+/*!
+  \brief A dry 1 m x 2 m elastic block on a fixed base (0.25 m cells, 64
+  points): the case text with `solver_extra` in [solver], followed by the
+  [[stages]] tables of `stages`.
+*/
+inline std::string blockCaseText( const std::string& solver_extra,
+                                  const std::string& stages )
+{
+    return R"(
+[case]
+name = "block"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.25
+cells = [8, 12]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+density_kg_per_m3 = 2000.0
+youngs_modulus_pa = 1.0e6
+poisson_ratio = 0.3
+[[bodies]]
+material = "soil"
+polygon_m = [[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]
+[[boundaries]]
+where = "bottom"
+condition = "fixed"
+[solver]
+)" + solver_extra +
+           "\n" + stages;
+}
+
+} // namespace mpm_test
+
+#endif // MPM_TEST_CLI_HPP
