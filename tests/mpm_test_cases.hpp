@@ -66,6 +66,27 @@ inline mpm::MaterialConfig saturatedMaterial( const double E, const double nu,
     return m;
 }
 
+//! Gives m the paper's van Genuchten retention (alpha = 0.44 / kPa,
+//! n = 3.04, S_res = 0.23, S_sat = 1; verification.md 5.1).
+inline mpm::MaterialConfig withPaperRetention( mpm::MaterialConfig m )
+{
+    m.retention.model = mpm::RetentionType::VanGenuchten;
+    m.retention.residual_saturation = 0.23;
+    m.retention.saturated_saturation = 1.0;
+    m.retention.alpha_per_pa = 4.4e-4;
+    m.retention.n = 3.04;
+    return m;
+}
+
+//! The slope study's soil, linear elastic (Table 2): E = 1e7 Pa, nu = 0.33,
+//! rho_s = 2700, n = 0.3, k = 4.5e-9 m^2 (K = 0.0441 m/s), with the paper's
+//! retention.
+inline mpm::MaterialConfig paperSoil()
+{
+    return withPaperRetention(
+        saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 ) );
+}
+
 /*!
   \brief Terzaghi consolidation column (verification.md 2.2): height H on a
   fixed impermeable base, rollers on the sides, drained top surface, no

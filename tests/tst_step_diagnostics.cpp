@@ -29,11 +29,8 @@ mpm::CaseConfig unsaturatedColumn( const bool bbar )
     stage.type = mpm::StageType::Dynamic;
     stage.gravity_m_per_s2 = { 0.0, -9.81 };
     stage.duration_s = 1.0;
-    auto soil = mpm_test::saturatedMaterial( 1.0e7, 0.3, 2700.0, 0.3, 4.5e-9 );
-    soil.retention.model = mpm::RetentionType::VanGenuchten;
-    soil.retention.alpha_per_pa = 4.4e-4;
-    soil.retention.n = 3.04;
-    soil.retention.residual_saturation = 0.23;
+    const auto soil = mpm_test::withPaperRetention(
+        mpm_test::saturatedMaterial( 1.0e7, 0.3, 2700.0, 0.3, 4.5e-9 ) );
     auto c = mpm_test::columnCase( 1.0, 0.125, soil, stage );
     c.analysis = mpm::AnalysisType::Unsaturated;
     c.bodies[0].initial_pore_pressure_pa = -2.0e4;

@@ -32,18 +32,7 @@ constexpr double rho_water = 1000.0;
 
 //---------------------------------------------------------------------------//
 // The slope soil of the paper (Table 2): E = 10 MPa, nu = 0.33,
-// rho_s = 2700, n = 0.3, k = 4.5e-9 m^2 (K = 0.0441 m/s), van Genuchten
-// alpha = 0.44 / kPa, n = 3.04, S_res = 0.23 (verification.md 5.1).
-mpm::MaterialConfig paperSoil()
-{
-    auto m = mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
-    m.retention.model = mpm::RetentionType::VanGenuchten;
-    m.retention.residual_saturation = 0.23;
-    m.retention.saturated_saturation = 1.0;
-    m.retention.alpha_per_pa = 4.4e-4;
-    m.retention.n = 3.04;
-    return m;
-}
+using mpm_test::paperSoil;
 
 //! Constrained (oedometric) modulus E (1 - nu) / ((1 + nu)(1 - 2 nu)).
 double constrainedModulus( const mpm::MaterialConfig& m )

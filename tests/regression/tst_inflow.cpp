@@ -26,12 +26,7 @@ using mpm_test::waterVolume;
 */
 TYPED_TEST( Inflow, rainfall_flux_adds_its_water_volume )
 {
-    mpm::MaterialConfig soil =
-        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
-    soil.retention.model = mpm::RetentionType::VanGenuchten;
-    soil.retention.alpha_per_pa = 4.4e-4;
-    soil.retention.n = 3.04;
-    soil.retention.residual_saturation = 0.23;
+    const mpm::MaterialConfig soil = mpm_test::paperSoil();
     mpm::StageConfig rain;
     rain.name = "rain";
     rain.type = mpm::StageType::Dynamic;

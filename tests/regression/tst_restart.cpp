@@ -84,10 +84,7 @@ mpm::CaseConfig twoPhaseCase()
     soil.cohesion_residual_pa = 1.0e3;
     soil.softening_modulus_pa = -1.0e5;
     soil.friction_angle_deg = 20.0;
-    soil.retention.model = mpm::RetentionType::VanGenuchten;
-    soil.retention.alpha_per_pa = 4.4e-4;
-    soil.retention.n = 3.04;
-    soil.retention.residual_saturation = 0.23;
+    soil = mpm_test::withPaperRetention( soil );
 
     mpm::CaseConfig c;
     c.file = "<two-phase test>";

@@ -80,12 +80,7 @@ TYPED_TEST( SlopeSmoke, coarse_base_case_wets_its_surface )
 */
 TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
 {
-    mpm::MaterialConfig soil =
-        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
-    soil.retention.model = mpm::RetentionType::VanGenuchten;
-    soil.retention.alpha_per_pa = 4.4e-4;
-    soil.retention.n = 3.04;
-    soil.retention.residual_saturation = 0.23;
+    const mpm::MaterialConfig soil = mpm_test::paperSoil();
     mpm::StageConfig rain;
     rain.name = "rain";
     rain.type = mpm::StageType::Dynamic;
@@ -123,12 +118,7 @@ TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
 */
 TYPED_TEST( SlopeSmoke, fixed_inflows_keep_their_points_when_the_surface_moves )
 {
-    mpm::MaterialConfig soil =
-        mpm_test::saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 );
-    soil.retention.model = mpm::RetentionType::VanGenuchten;
-    soil.retention.alpha_per_pa = 4.4e-4;
-    soil.retention.n = 3.04;
-    soil.retention.residual_saturation = 0.23;
+    const mpm::MaterialConfig soil = mpm_test::paperSoil();
     mpm::StageConfig rain;
     rain.name = "rain";
     rain.type = mpm::StageType::Dynamic;
