@@ -1,6 +1,7 @@
 #ifndef MPM_GRID_UPDATE_TWO_PHASE_HPP
 #define MPM_GRID_UPDATE_TWO_PHASE_HPP
 
+#include <mpm_base_cells.hpp>
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_p2g_two_phase.hpp>
@@ -22,7 +23,8 @@ namespace mpm
   (TwoPhaseNodalUpdate), the solid's boundary flags and the water's
   impermeability ties. The water force (per unit water volume) is scaled
   by the nodal n S = m_w / (rho_w vol); the drag comes from the nodal mean
-  permeability (physics::nodalDrag).
+  permeability (physics::nodalDrag). Nodes of base cells get the forces
+  that complete those cells (BaseCellAccess::addNodeForces).
 */
 template <class ExecSpace, class Duplication>
 void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
@@ -32,10 +34,12 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                          const double dt, const double damping,
                          const double water_density,
                          const double water_viscosity,
-                         const double inertia_scaling = 1.0 )
+                         const double inertia_scaling,
+                         const BaseCellAccess<ExecSpace>& base )
 {
     const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
+    const int nx = gv.geometry.nx;
     gv.num_active = scatter.listTouched( exec_space, gv.active_i );
     const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
     const auto m_s_i = unmanaged( gv.m_i );
@@ -73,6 +77,10 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                 f_m[d] = sums.take( n, F::f_m_x + d );
                 mv_w[d] = sums.take( n, F::mv_w_x + d );
                 f_w[d] = sums.take( n, F::f_w_x + d );
+            }
+            base.addNodeForces( i, j, nx, f_m, f_w );
+            for ( int d = 0; d < 2; ++d )
+            {
                 mv_s_i( i, j, d ) = mv_s[d];
                 f_m_i( i, j, d ) = f_m[d];
                 mv_w_i( i, j, d ) = mv_w[d];

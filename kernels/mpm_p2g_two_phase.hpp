@@ -1,6 +1,7 @@
 #ifndef MPM_P2G_TWO_PHASE_HPP
 #define MPM_P2G_TWO_PHASE_HPP
 
+#include <mpm_base_cells.hpp>
 #include <mpm_grid_scatter.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_scatter.hpp>
@@ -58,6 +59,7 @@ using TwoPhaseMomentumSums = GridScatter<ExecSpace, 4, Duplication>;
   from the nodal mean permeability kv / vol and the nodal n S =
   m_w / (rho_w vol).
   `load_force` holds the force (N) on a point of each load condition.
+  Points of base cells also go into their cell's sums (BaseCellAccess).
 */
 template <class ExecSpace, class Duplication, class LoadView>
 void scatterTwoPhase(
@@ -66,7 +68,8 @@ void scatterTwoPhase(
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double gravity_x, const double gravity_y, const LoadView& load_force,
     const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>&
-        scatter )
+        scatter,
+    const BaseCellAccess<ExecSpace>& base )
 {
     const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
@@ -114,6 +117,9 @@ void scatterTwoPhase(
                 load[0] = loads( load_p( p ), 0 );
                 load[1] = loads( load_p( p ), 1 );
             }
+            const double sigma[3] = { sigma_p( p, 0 ), sigma_p( p, 1 ),
+                                      sigma_p( p, 2 ) };
+            base.addPoint( ci, cj, w, vol, sigma, bishop, p_w );
             const double v_s[2] = { v_s_p( p, 0 ), v_s_p( p, 1 ) };
             const double v_w[2] = { v_w_p( p, 0 ), v_w_p( p, 1 ) };
             const double g[2] = { gravity_x, gravity_y };

@@ -127,8 +127,9 @@ updatePoints( const char* label, const ExecSpace& exec_space,
 //---------------------------------------------------------------------------//
 /*!
   \brief The velocity gradient L of a point for the step's stress and pore
-  pressure (two-phase: also its water divergence, waterDivergenceAt), kept
-  in grad_v_p (and div_v_w_p): from the remapped nodal velocities or, with
+  pressure and (two-phase) its water volume rate r = n S div v_w + (1 - n)
+  S div v_s (waterVolumeRate; div v_w from waterDivergenceAt), kept in
+  grad_v_p (and div_v_w_p): from the remapped nodal velocities or, with
   `bbar`, the gradient of velocityGradientCellSums with the cell-averaged
   volumetric rates (cellAverageVolumetricRate, and the cell average of the
   water divergence).
@@ -176,11 +177,12 @@ struct StepVelocityGradient
     {
     }
 
-    //! L and (two-phase) div v_w of point p.
+    //! L and (two-phase) the water volume rate r of point p.
     KOKKOS_FORCEINLINE_FUNCTION void operator()( const int p, double L[2][2],
-                                                 double& div_v_w ) const
+                                                 double& water_rate ) const
     {
-        div_v_w = 0.0;
+        water_rate = 0.0;
+        double div_v_w = 0.0;
         if ( bbar )
         {
             for ( int a = 0; a < 2; ++a )
@@ -190,7 +192,12 @@ struct StepVelocityGradient
                 div_v_w = div_v_w_p( p );
             int ci, cj;
             if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+            {
+                if ( two_phase )
+                    water_rate =
+                        waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
                 return;
+            }
             cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
             grad_v_p( p, 0, 0 ) = L[0][0];
             grad_v_p( p, 1, 1 ) = L[1][1];
@@ -198,6 +205,7 @@ struct StepVelocityGradient
             {
                 div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
                 div_v_w_p( p ) = div_v_w;
+                water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
             }
             return;
         }
@@ -214,6 +222,7 @@ struct StepVelocityGradient
                                          m_w_i, vol_i, water_density,
                                          n_p( p ) * S_p( p ), L );
             div_v_w_p( p ) = div_v_w;
+            water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
         }
     }
 };
@@ -233,8 +242,8 @@ struct DryStateUpdate
     {
         for ( int l = 0; l < count; ++l )
         {
-            double L[2][2], div_v_w;
-            gradient( p[l], L, div_v_w );
+            double L[2][2], water_rate;
+            gradient( p[l], L, water_rate );
             stress( p[l], L, *params[l] );
         }
     }
@@ -289,10 +298,10 @@ struct TwoPhaseStateUpdate
     operator()( const int count, const int p[],
                 const physics::MaterialParams* const params[] ) const
     {
-        double L[lanes][2][2], div_v_w[lanes];
+        double L[lanes][2][2], water_rate[lanes];
         for ( int l = 0; l < count; ++l )
-            gradient( p[l], L[l], div_v_w[l] );
-        pore_pressure( count, p, L, div_v_w, params );
+            gradient( p[l], L[l], water_rate[l] );
+        pore_pressure( count, p, L, water_rate, params );
         for ( int l = 0; l < count; ++l )
             stress( p[l], L[l], *params[l] );
     }

@@ -36,18 +36,17 @@ struct RetentionAt
 /*!
   \brief Pore pressure, porosity and retention state of points
   (formulation.md steps 6, 7, 9) from their velocity gradient L and water
-  divergence div v_w: p_w from the mass-conservative Eq. 8 (explicit when
-  saturated), prescribed point pressures, porosity from Eq. 2 as
-  n' = 1 - (1 - n) / det(I + L dt), then S, dS/dp_w, k_rel.
-  `prescribed_p_w(c)` is the current pressure of condition c, Pa;
-  `inflow_rate(f)` the water volume inflow f adds per unit point volume
-  and time (1/s), a source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on
-  its points (the excess runs off). With `retention_current`, the stored
-  S_p, dS_dp_p and k_rel_p are the retention law's values at p_w_p (true
-  after an unsaturated update with the same materials), which saves one
-  retention evaluation per point, and all of them where p_w is held.
-  Updates up to `lanes` points at once, their Newton iterations in lock
-  step (physics::porePressureIncrements).
+  volume rate r = n S div v_w + (1 - n) S div v_s (waterVolumeRate): p_w from
+  the mass-conservative Eq. 8 (explicit when saturated), prescribed point
+  pressures, porosity from Eq. 2 as n' = 1 - (1 - n) / det(I + L dt), then S,
+  dS/dp_w, k_rel. `prescribed_p_w(c)` is the current pressure of condition c,
+  Pa; `inflow_rate(f)` the water volume inflow f adds per unit point volume and
+  time (1/s), a source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on its points
+  (the excess runs off). With `retention_current`, the stored S_p, dS_dp_p and
+  k_rel_p are the retention law's values at p_w_p (true after an unsaturated
+  update with the same materials), which saves one retention evaluation per
+  point, and all of them where p_w is held. Updates up to `lanes` points at
+  once, their Newton iterations in lock step (physics::porePressureIncrements).
 */
 template <class ExecSpace, class PressureView, class RateView, class FlagView>
 struct PorePressurePointUpdate
@@ -67,10 +66,10 @@ struct PorePressurePointUpdate
     UnmanagedView<FlagView> inflow_ponding;
 
     //! Updates the `count` (<= lanes) points p[l], with velocity gradient
-    //! L[l], water divergence div_v_w[l] and material params[l].
+    //! L[l], water volume rate water_rate[l] and material params[l].
     KOKKOS_INLINE_FUNCTION void
     operator()( const int count, const int p[], const double L[][2][2],
-                const double div_v_w[],
+                const double water_rate[],
                 const physics::MaterialParams* const params[] ) const
     {
         RetentionAt retention[lanes];
@@ -84,13 +83,11 @@ struct PorePressurePointUpdate
             const int q = p[l];
             const double n = n_p( q );
             const double S = S_p( q );
-            const double div_s = L[l][0][0] + L[l][1][1];
             // Water volume change per unit volume over the step (Eq. 8).
             const int inflow = inflow_p( q );
             const double source = inflow >= 0 ? inflow_rate( inflow ) : 0.0;
             const double volume_change =
-                kinematics.dt *
-                ( source - n * S * div_v_w[l] - ( 1.0 - n ) * S * div_s );
+                kinematics.dt * ( source - water_rate[l] );
             retention[l] = RetentionAt{ params[l]->retention };
             newton[l] = physics::PorePressureNewton(
                 p_w_p( q ), S, n, water.bulk_modulus, volume_change );

@@ -67,6 +67,19 @@ waterDivergenceAt( const int ci, const int cj, const double dwdx[4],
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Water volume rate of Eq. 8 at a point, 1/s:
+  r = n S div v_w + (1 - n) S div v_s, with n S div v_w from the nodal
+  relative flux (waterDivergenceAt), so that r = div q + S div v_s.
+*/
+KOKKOS_INLINE_FUNCTION double waterVolumeRate( const double n, const double S,
+                                               const double div_v_w,
+                                               const double L[2][2] )
+{
+    return n * S * div_v_w + ( 1.0 - n ) * S * ( L[0][0] + L[1][1] );
+}
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Velocity gradient at the points from the remapped nodal velocity,
   L_p = sum v_i (x) grad N_i (MUSL).
 */

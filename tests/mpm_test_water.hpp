@@ -3,6 +3,8 @@
 
 #include <solver/mpm_run_observer.hpp>
 
+#include <string>
+
 namespace mpm_test
 {
 //! Water volume sum n S V of the points of a snapshot, m^3 per metre.
@@ -12,6 +14,30 @@ inline double waterVolume( const mpm::HostSnapshot& snap )
     for ( int p = 0; p < snap.num_points; ++p )
         volume += snap.n[p] * snap.S[p] * snap.vol[p];
     return volume;
+}
+
+/*!
+  \brief The slope study's soil as a case file's [[materials]] entry
+  "soil": linear elastic (E = 10 MPa, nu = 0.33), n = 0.3, k = 4.5e-9 m^2
+  (K = 0.044 m/s), the paper's van Genuchten retention.
+*/
+inline std::string slopeSoilToml()
+{
+    return R"(
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 2700.0
+porosity = 0.3
+permeability_m2 = 4.5e-9
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.33
+[materials.retention]
+model = "van_genuchten"
+alpha_per_pa = 4.4e-4
+n = 3.04
+residual_saturation = 0.23
+)";
 }
 
 } // namespace mpm_test

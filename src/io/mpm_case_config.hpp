@@ -258,6 +258,11 @@ struct SolverConfig
     double flip_fraction = 0.99;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;
+    /*!
+      Complete the stress divergence of cells cut by a fixed base (a base
+      line between grid lines): physics::BaseCellCompletion.
+    */
+    bool base_cell_completion = true;
     //! Remove points that leave the grid (counted) instead of stopping.
     bool remove_points_leaving_grid = false;
     //! A speed above this factor times the largest wave speed is unstable.

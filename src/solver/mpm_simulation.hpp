@@ -2,6 +2,7 @@
 #define MPM_SIMULATION_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <mpm_base_cells.hpp>
 #include <mpm_diagnostics.hpp>
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
@@ -115,6 +116,8 @@ class Simulation
         materials = makeMaterialTable( stage.materials );
         copyNodeFlags( nodeFlags( grid_config, stage.boundaries ),
                        grid.flags_i );
+        if ( solver.base_cell_completion )
+            _base_cells = BaseCells<ExecSpace>( grid.geometry, grid.flags_i );
         if ( twoPhase() )
             copyNodeFlags( waterNodeFlags( grid_config, stage.boundaries ),
                            water_grid.flags_w_i );
@@ -293,13 +296,15 @@ class Simulation
                                        const StepSettings& settings )
     {
         const ExecSpace exec;
+        const BaseCellAccess<ExecSpace> base( _base_cells, grid.geometry );
         scatterTwoPhase( exec, particles, water_particles, grid.geometry,
                          materials, water, settings.gravity_x,
                          settings.gravity_y, conditions.load_force,
-                         _two_phase_sums );
+                         _two_phase_sums, base );
+        baseCellForces( exec, _base_cells, grid.geometry );
         gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
                             settings.damping, water.density, water.viscosity,
-                            solver.inertia_scaling );
+                            solver.inertia_scaling, base );
         g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
                                   water_grid, dt, stepFlipFraction( dt ),
                                   water.density, _two_phase_momentum );
@@ -337,6 +342,8 @@ class Simulation
     TwoPhaseNodeSums<ExecSpace> _two_phase_sums;
     TwoPhaseMomentumSums<ExecSpace> _two_phase_momentum;
     CellSums<ExecSpace> _cell_sums;
+    //! Cells cut by the fixed base (their divergence completed).
+    BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).
     StepDiagnostics _diagnostics{ 0.0, 0.0, 0.0, 0.0, 0 };
     long _diagnostics_step = -1;

@@ -35,19 +35,8 @@ analysis = "unsaturated"
 origin_m = [0.0, 0.0]
 cell_size_m = 0.5
 cells = [1, 12]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.33
-[materials.retention]
-model = "van_genuchten"
-alpha_per_pa = 4.4e-4
-n = 3.04
-residual_saturation = 0.23
+)" + mpm_test::slopeSoilToml() +
+           R"(
 [[bodies]]
 material = "soil"
 polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 5.0], [0.0, 5.0]]
