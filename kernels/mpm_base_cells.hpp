@@ -4,6 +4,7 @@
 #include <mpm_device_type.hpp>
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_water_views.hpp>
 #include <physics/mpm_base_cell.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_nodal_update.hpp>
@@ -19,20 +20,35 @@ struct BaseCellField
 {
     enum : int
     {
-        vol,      //!< sum V_p, m^3
-        vol_xi,   //!< sum V_p xi_p (local x in [0, 1])
-        vol_eta,  //!< sum V_p eta_p
-        sigma_xx, //!< sum V_p sigma'_p (effective, tension positive)
-        sigma_yy, //!< ...
-        sigma_xy, //!< ...
-        bishop,   //!< sum V_p S_p p_w,p
-        p_w,      //!< sum V_p p_w,p
+        vol,        //!< sum V_p, m^3
+        vol_xi,     //!< sum V_p xi_p (local x in [0, 1])
+        vol_eta,    //!< sum V_p eta_p
+        vol_xi_eta, //!< sum V_p xi_p eta_p
+        mass,       //!< sum of the points' solid and water masses, kg
+        sigma_xx,   //!< sum V_p sigma'_p (effective, tension positive)
+        sigma_yy,   //!< ...
+        sigma_xy,   //!< ...
+        bishop,     //!< sum V_p S_p p_w,p
+        p_w,        //!< sum V_p p_w,p
+        S,          //!< sum V_p S_p
         count
     };
 };
 
 //! Corner forces of a base cell: mixture x, y and water x, y per corner.
 constexpr int base_cell_forces = 16;
+//! The sums a base cell keeps (after its forces) for baseCellRates.
+struct BaseCellKept
+{
+    enum : int
+    {
+        vol = base_cell_forces, //!< sum V_p, m^3
+        vol_xi,                 //!< sum V_p xi_p
+        vol_eta,                //!< sum V_p eta_p
+        S,                      //!< mean S
+        count
+    };
+};
 
 //---------------------------------------------------------------------------//
 /*!
@@ -48,22 +64,43 @@ struct BaseCells
     using device_type = DeviceType<ExecSpace>;
     using int_view = Kokkos::View<int**, device_type>;
     using index_view = Kokkos::View<int*, device_type>;
-    using force_view = Kokkos::View<double** [base_cell_forces], device_type>;
+    using force_view =
+        Kokkos::View<double* * [BaseCellKept::count], device_type>;
+    using rate_view = Kokkos::View<double**, device_type>;
     using sums_type = GridScatter<ExecSpace, BaseCellField::count>;
 
     int_view base_c;   //!< 1 for a base cell (nx x ny)
     index_view list_c; //!< flat indices ci * ny + cj of the base cells
     int num_cells = 0;
-    force_view force_c; //!< corner forces, N per unit thickness
+    force_view force_c; //!< corner forces, N per unit thickness, and
+                        //!< the sums kept (BaseCellKept)
+    rate_view rate_c;   //!< water volume rate of the empty part per unit
+                        //!< volume of the soil part, 1/s
     sums_type sums;
 
     BaseCells() = default;
 
-    //! The base cells of the solid's node flags (NodeFlag, nx+1 x ny+1).
-    BaseCells( const physics::GridGeometry& grid, const int_view& flags_i )
+    /*!
+      The base cells of the solid's node flags (NodeFlag, nx+1 x ny+1): the
+      cells with fixed and free nodes that hold fewer than `full` points
+      (x: the points' positions, x and y per point). A full cell next to
+      fixed nodes (a base on a grid line) needs no completion; its points'
+      volumes follow the strain, and counting a compressed cell as cut
+      would add spurious forces and water.
+    */
+    BaseCells( const physics::GridGeometry& grid, const int_view& flags_i,
+               const std::vector<double>& x, const int full )
     {
         auto flags =
             Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), flags_i );
+        std::vector<int> count( static_cast<std::size_t>( grid.nx ) * grid.ny,
+                                0 );
+        for ( std::size_t p = 0; p + 1 < x.size(); p += 2 )
+        {
+            int ci, cj;
+            if ( grid.cellOf( x[p], x[p + 1], ci, cj ) )
+                ++count[ci * grid.ny + cj];
+        }
         std::vector<int> cells;
         for ( int i = 0; i < grid.nx; ++i )
             for ( int j = 0; j < grid.ny; ++j )
@@ -72,7 +109,7 @@ struct BaseCells
                 for ( int k = 0; k < 4; ++k )
                     fixed += ( flags( i + ( k & 1 ), j + ( k >> 1 ) ) &
                                node_fixed ) == node_fixed;
-                if ( fixed > 0 && fixed < 4 )
+                if ( fixed > 0 && fixed < 4 && count[i * grid.ny + j] < full )
                     cells.push_back( i * grid.ny + j );
             }
         num_cells = static_cast<int>( cells.size() );
@@ -81,6 +118,7 @@ struct BaseCells
         base_c = int_view( "base_c", grid.nx, grid.ny );
         list_c = index_view( "base_list_c", num_cells );
         force_c = force_view( "base_force_c", grid.nx, grid.ny );
+        rate_c = rate_view( "base_rate_c", grid.nx, grid.ny );
         sums = sums_type( "base_sums", grid.nx * grid.ny );
         auto base_h = Kokkos::create_mirror_view( base_c );
         auto list_h = Kokkos::create_mirror_view( list_c );
@@ -108,6 +146,7 @@ struct BaseCellAccess
     int ny = 1;
     UnmanagedView<typename BaseCells<ExecSpace>::int_view> base_c;
     UnmanagedView<typename BaseCells<ExecSpace>::force_view> force_c;
+    UnmanagedView<typename BaseCells<ExecSpace>::rate_view> rate_c;
     typename BaseCells<ExecSpace>::sums_type::Handle sums;
 
     explicit BaseCellAccess( const BaseCells<ExecSpace>& cells,
@@ -116,19 +155,20 @@ struct BaseCellAccess
         , ny( grid.ny )
         , base_c( cells.base_c )
         , force_c( cells.force_c )
+        , rate_c( cells.rate_c )
         , sums( cells.sums.handle() )
     {
     }
 
     /*!
       \brief Adds a point of cell (ci, cj) with bilinear weights w, volume
-      vol, effective stress sigma (xx, yy, xy), S p_w and p_w to its cell's
-      sums if the cell is a base cell.
+      vol, mass (solid and water), effective stress sigma (xx, yy, xy),
+      saturation S and p_w to its cell's sums if the cell is a base cell.
     */
     KOKKOS_INLINE_FUNCTION void addPoint( const int ci, const int cj,
                                           const double w[4], const double vol,
-                                          const double sigma[3],
-                                          const double bishop,
+                                          const double mass,
+                                          const double sigma[3], const double S,
                                           const double p_w ) const
     {
         if ( !enabled || !base_c( ci, cj ) )
@@ -139,11 +179,21 @@ struct BaseCellAccess
         cell.add( c, F::vol, vol );
         cell.add( c, F::vol_xi, vol * ( w[1] + w[3] ) );
         cell.add( c, F::vol_eta, vol * ( w[2] + w[3] ) );
+        cell.add( c, F::vol_xi_eta, vol * w[3] );
+        cell.add( c, F::mass, mass );
         cell.add( c, F::sigma_xx, vol * sigma[0] );
         cell.add( c, F::sigma_yy, vol * sigma[1] );
         cell.add( c, F::sigma_xy, vol * sigma[2] );
-        cell.add( c, F::bishop, vol * bishop );
+        cell.add( c, F::bishop, vol * S * p_w );
         cell.add( c, F::p_w, vol * p_w );
+        cell.add( c, F::S, vol * S );
+    }
+
+    //! Water volume rate a point of cell (ci, cj) takes from the cell's
+    //! empty part (baseCellRates), 1/s; 0 outside base cells.
+    KOKKOS_INLINE_FUNCTION double extraRate( const int ci, const int cj ) const
+    {
+        return enabled && base_c( ci, cj ) ? rate_c( ci, cj ) : 0.0;
     }
 
     /*!
@@ -181,12 +231,15 @@ struct BaseCellAccess
 //---------------------------------------------------------------------------//
 /*!
   \brief Takes the base cells' sums of the step's P2G and sets their corner
-  forces (physics::BaseCellCompletion); a base cell without points gets
-  none.
+  forces (physics::BaseCellCompletion), with the empty part's weight under
+  gravity (gravity_x, gravity_y): the cell's mean density for the mixture,
+  water_density for the water (0 in a dry scene); a base cell without
+  points gets none.
 */
 template <class ExecSpace>
 void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
-                     const physics::GridGeometry& grid )
+                     const physics::GridGeometry& grid, const double gravity_x,
+                     const double gravity_y, const double water_density )
 {
     if ( !cells.active() )
         return;
@@ -209,10 +262,14 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                 s[f] = sums.take( c, f );
             if ( !( s[F::vol] > 0.0 ) )
             {
-                for ( int f = 0; f < base_cell_forces; ++f )
+                for ( int f = 0; f < BaseCellKept::count; ++f )
                     force_c( ci, cj, f ) = 0.0;
                 return;
             }
+            force_c( ci, cj, BaseCellKept::vol ) = s[F::vol];
+            force_c( ci, cj, BaseCellKept::vol_xi ) = s[F::vol_xi];
+            force_c( ci, cj, BaseCellKept::vol_eta ) = s[F::vol_eta];
+            force_c( ci, cj, BaseCellKept::S ) = s[F::S] / s[F::vol];
             const double inv_vol = 1.0 / s[F::vol];
             const double bishop = s[F::bishop] * inv_vol;
             // Mean total stress, sigma = sigma' - S p_w m (Eq. 11).
@@ -220,6 +277,8 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                                       s[F::sigma_yy] * inv_vol - bishop,
                                       s[F::sigma_xy] * inv_vol };
             const double p_w = s[F::p_w] * inv_vol;
+            const double density = s[F::mass] * inv_vol;
+            const double g[2] = { gravity_x, gravity_y };
             for ( int k = 0; k < 4; ++k )
             {
                 double D[2], f_m[2], f_w[2];
@@ -227,11 +286,84 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                                     D );
                 completion.mixtureForce( D, sigma, f_m );
                 completion.waterForce( D, p_w, f_w );
+                const double W =
+                    completion.missingVolume( k, s[F::vol], s[F::vol_xi],
+                                              s[F::vol_eta], s[F::vol_xi_eta] );
+                for ( int d = 0; d < 2; ++d )
+                {
+                    f_m[d] += W * density * g[d];
+                    f_w[d] += W * water_density * g[d];
+                }
                 force_c( ci, cj, 4 * k ) = f_m[0];
                 force_c( ci, cj, 4 * k + 1 ) = f_m[1];
                 force_c( ci, cj, 4 * k + 2 ) = f_w[0];
                 force_c( ci, cj, 4 * k + 3 ) = f_w[1];
             }
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The water balance of a base cell's empty part, from the step's
+  remapped nodal velocities: its outflow int (div q + S div v_s) dV =
+  sum_k (q_k + S_bar v_s,k) . D_k over the corners (q_k = nS_k (v_w,k -
+  v_s,k), nodal nS = m_w / (rho_w vol); D_k from
+  physics::BaseCellCompletion), per unit volume of the cell's soil, into
+  rate_c. The soil's points add it to their water volume rate
+  (BaseCellAccess::extraRate): the empty part, completed in the momentum
+  balance, stores no water and passes what enters it to the soil, so no
+  water crosses the base line (without it the nodal relative flux next to
+  the base leaked water through it).
+*/
+template <class ExecSpace>
+void baseCellRates( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
+                    const GridViews<ExecSpace>& gv,
+                    const WaterGridViews<ExecSpace>& wg,
+                    const double water_density )
+{
+    if ( !cells.active() )
+        return;
+    const auto list_c = unmanaged( cells.list_c );
+    const auto force_c = unmanaged( cells.force_c );
+    const auto rate_c = unmanaged( cells.rate_c );
+    const auto v_s = unmanaged( gv.v_i );
+    const auto v_w = unmanaged( wg.v_w_i );
+    const auto m_w = unmanaged( wg.m_w_i );
+    const auto vol = unmanaged( wg.vol_i );
+    const physics::BaseCellCompletion completion{ gv.geometry.h };
+    const int ny = gv.geometry.ny;
+
+    Kokkos::parallel_for(
+        "mpm::base_cell_rates",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, cells.num_cells ),
+        KOKKOS_LAMBDA( const int e ) {
+            using K = BaseCellKept;
+            const int c = list_c( e );
+            const int ci = c / ny;
+            const int cj = c % ny;
+            const double m0 = force_c( ci, cj, K::vol );
+            rate_c( ci, cj ) = 0.0;
+            if ( !( m0 > 0.0 ) )
+                return;
+            const double S = force_c( ci, cj, K::S );
+            double outflow = 0.0;
+            for ( int k = 0; k < 4; ++k )
+            {
+                const int i = ci + ( k & 1 );
+                const int j = cj + ( k >> 1 );
+                double D[2];
+                completion.missing( k, m0, force_c( ci, cj, K::vol_xi ),
+                                    force_c( ci, cj, K::vol_eta ), D );
+                const double nS =
+                    m_w( i, j ) > 0.0
+                        ? m_w( i, j ) / ( water_density * vol( i, j ) )
+                        : 0.0;
+                for ( int d = 0; d < 2; ++d )
+                    outflow += ( nS * ( v_w( i, j, d ) - v_s( i, j, d ) ) +
+                                 S * v_s( i, j, d ) ) *
+                               D[d];
+            }
+            rate_c( ci, cj ) = outflow / m0;
         } );
 }
 

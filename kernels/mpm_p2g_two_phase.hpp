@@ -119,7 +119,7 @@ void scatterTwoPhase(
             }
             const double sigma[3] = { sigma_p( p, 0 ), sigma_p( p, 1 ),
                                       sigma_p( p, 2 ) };
-            base.addPoint( ci, cj, w, vol, sigma, bishop, p_w );
+            base.addPoint( ci, cj, w, vol, m_s + m_w, sigma, S_p( p ), p_w );
             const double v_s[2] = { v_s_p( p, 0 ), v_s_p( p, 1 ) };
             const double v_w[2] = { v_w_p( p, 0 ), v_w_p( p, 1 ) };
             const double g[2] = { gravity_x, gravity_y };

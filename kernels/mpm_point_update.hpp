@@ -1,6 +1,7 @@
 #ifndef MPM_POINT_UPDATE_HPP
 #define MPM_POINT_UPDATE_HPP
 
+#include <mpm_base_cells.hpp>
 #include <mpm_diagnostics.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
@@ -132,7 +133,8 @@ updatePoints( const char* label, const ExecSpace& exec_space,
   grad_v_p (and div_v_w_p): from the remapped nodal velocities or, with
   `bbar`, the gradient of velocityGradientCellSums with the cell-averaged
   volumetric rates (cellAverageVolumetricRate, and the cell average of the
-  water divergence).
+  water divergence). A point of a base cell adds the water its cell's
+  empty part passes on (BaseCellAccess::extraRate).
 */
 template <class ExecSpace>
 struct StepVelocityGradient
@@ -144,6 +146,7 @@ struct StepVelocityGradient
     bool bbar;
     bool two_phase;
     double water_density;
+    BaseCellAccess<ExecSpace> base;
     physics::GridGeometry grid;
     UnmanagedView<typename gv_type::vector_view> v_s_i;
     UnmanagedView<typename wg_type::vector_view> v_w_i;
@@ -157,10 +160,12 @@ struct StepVelocityGradient
                           const WaterParticleViews<ExecSpace>& wv,
                           const GridViews<ExecSpace>& gv,
                           const WaterGridViews<ExecSpace>& wg,
-                          const double density_w, const bool cell_average )
+                          const double density_w, const bool cell_average,
+                          const BaseCellAccess<ExecSpace>& base_cells )
         : bbar( cell_average )
         , two_phase( wv.allocated() )
         , water_density( density_w )
+        , base( base_cells )
         , grid( gv.geometry )
         , v_s_i( gv.v_i )
         , v_w_i( wg.v_w_i )
@@ -205,7 +210,8 @@ struct StepVelocityGradient
             {
                 div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
                 div_v_w_p( p ) = div_v_w;
-                water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
+                water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
+                             base.extraRate( ci, cj );
             }
             return;
         }
@@ -222,7 +228,8 @@ struct StepVelocityGradient
                                          m_w_i, vol_i, water_density,
                                          n_p( p ) * S_p( p ), L );
             div_v_w_p( p ) = div_v_w;
-            water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
+            water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
+                         base.extraRate( ci, cj );
         }
     }
 };
@@ -265,7 +272,8 @@ PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
     const WaterParticleViews<ExecSpace> no_water;
     const DryStateUpdate<ExecSpace> update_states{
         StepVelocityGradient<ExecSpace>(
-            pv, no_water, gv, WaterGridViews<ExecSpace>(), 0.0, bbar ),
+            pv, no_water, gv, WaterGridViews<ExecSpace>(), 0.0, bbar,
+            BaseCellAccess<ExecSpace>( BaseCells<ExecSpace>(), gv.geometry ) ),
         StressPointUpdate<ExecSpace>( pv, dt ) };
     const auto m_p = unmanaged( pv.m_p );
     const auto vol_p = unmanaged( pv.vol_p );
@@ -320,10 +328,12 @@ PointUpdateReport updatePointsTwoPhase(
     const WaterGridViews<ExecSpace>& wg,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double dt, const bool bbar, const bool remove_outside,
-    const PorePressureUpdate& pore_pressure )
+    const PorePressureUpdate& pore_pressure,
+    const BaseCellAccess<ExecSpace>& base )
 {
     const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
-        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar ),
+        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar,
+                                         base ),
         pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
     const auto m_p = unmanaged( pv.m_p );
     const auto vol_p = unmanaged( pv.vol_p );

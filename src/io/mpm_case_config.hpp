@@ -263,6 +263,9 @@ struct SolverConfig
       line between grid lines): physics::BaseCellCompletion.
     */
     bool base_cell_completion = true;
+    //! Two-phase: the points of a cell share one p_w that holds their
+    //! water (physics::CellWaterEquilibrium).
+    bool cell_equilibrium = true;
     //! Remove points that leave the grid (counted) instead of stopping.
     bool remove_points_leaving_grid = false;
     //! A speed above this factor times the largest wave speed is unstable.

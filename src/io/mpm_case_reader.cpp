@@ -298,9 +298,9 @@ class CaseParser
             return;
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
-                       "base_cell_completion", "remove_points_leaving_grid",
-                       "instability_speed_factor", "inertia_scaling",
-                       "checkpoint_interval_s" },
+                       "base_cell_completion", "cell_equilibrium",
+                       "remove_points_leaving_grid", "instability_speed_factor",
+                       "inertia_scaling", "checkpoint_interval_s" },
                      "[solver]" );
         SolverConfig& s = _config.solver;
         s.courant_number = r.number( "courant_number",
@@ -315,6 +315,8 @@ class CaseParser
                                     "", Need::Optional )
                               .value_or( s.flip_fraction );
         s.bbar = r.boolean( "bbar", Need::Optional ).value_or( s.bbar );
+        s.cell_equilibrium = r.boolean( "cell_equilibrium", Need::Optional )
+                                 .value_or( s.cell_equilibrium );
         s.base_cell_completion =
             r.boolean( "base_cell_completion", Need::Optional )
                 .value_or( s.base_cell_completion );

@@ -227,6 +227,88 @@ porePressureIncrement( const RetentionFunction& retention, const double p_w,
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Water equilibrium inside a cell (a stabilised Eq. 8): after the
+  point-wise mass balance of a step, the points of a cell (those without a
+  prescribed p_w) take one pressure P, the one that holds their water:
+    sum_i a_i (S_i(P) - S_i) + sum_i a_i S_i (P - p_i) / K_w = 0,
+  a_i = V_i n_i, solved by a safeguarded Newton iteration (the left side
+  grows with P; P lies between the points' smallest and largest p_w).
+
+  The nodal forces cannot see a pressure that alternates from point to
+  point inside a cell (the hourglass mode of four points on a bilinear
+  cell), nor, in a cell with fixed nodes, the pressures that act only on
+  those nodes; once a staircase base or a front excites such a mode
+  nothing corrects it. Water inside one cell equilibrates within h^2/c_v,
+  well below a step's resolution of the flow between cells (for the slope
+  soil about 4 ms against the 0.25 s the wetting front takes to cross a
+  cell), so one pressure per cell removes those modes and no physics the
+  grid resolves. The water of the cell is conserved exactly (the
+  retention law is evaluated, not linearised), so a front inside a cell
+  keeps its water and spreads over the cell.
+*/
+struct CellWaterEquilibrium
+{
+    static constexpr int max_iterations = 60;
+    double bulk_modulus; //!< K_w, Pa
+
+    //! What the solve needs of a point.
+    struct Point
+    {
+        double a;   //!< V n, m^3
+        double S;   //!< saturation before
+        double p_w; //!< pressure before, Pa
+        const RetentionParams* retention;
+    };
+
+    //! The common pressure P of the `count` points point(0..count).
+    template <class PointAt>
+    KOKKOS_INLINE_FUNCTION double solve( const int count,
+                                         const PointAt& point ) const
+    {
+        namespace KE = Kokkos::Experimental;
+        double lo = 1.0e300, hi = -1.0e300, weighted = 0.0, weight = 0.0;
+        for ( int i = 0; i < count; ++i )
+        {
+            const Point q = point( i );
+            lo = q.p_w < lo ? q.p_w : lo;
+            hi = q.p_w > hi ? q.p_w : hi;
+            weighted += q.a * q.S * q.p_w;
+            weight += q.a * q.S;
+        }
+        if ( !( hi - lo > 1.0e-9 * ( KE::fabs( hi ) + 1.0 ) ) )
+            return lo;
+        double P = weight > 0.0 ? weighted / weight : 0.5 * ( lo + hi );
+        P = P > lo && P < hi ? P : 0.5 * ( lo + hi );
+        for ( int iter = 0; iter < max_iterations; ++iter )
+        {
+            double g = 0.0, slope = 0.0;
+            for ( int i = 0; i < count; ++i )
+            {
+                const Point q = point( i );
+                const SaturationState state =
+                    Retention{}.saturationState( *q.retention, P );
+                g += q.a * ( state.S - q.S ) +
+                     q.a * q.S * ( P - q.p_w ) / bulk_modulus;
+                slope += q.a * ( state.dS_dp + q.S / bulk_modulus );
+            }
+            if ( g > 0.0 )
+                hi = P;
+            else
+                lo = P;
+            double next = P - g / slope;
+            if ( !( next > lo && next < hi ) )
+                next = 0.5 * ( lo + hi );
+            const double change = KE::fabs( next - P );
+            P = next;
+            if ( change <= 1.0e-12 * ( KE::fabs( P ) + 1.0 ) + 1.0e-9 )
+                break;
+        }
+        return P;
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Wave speeds of one point (formulation.md, time step), m/s: the
   undrained mixture wave sqrt((E_c + S^2 / (n (dS/dp + S/K_w))) / rho_m)
   and the pore-water wave sqrt(S / ((dS/dp + S/K_w) rho_w)); returns the

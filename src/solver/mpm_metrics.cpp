@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace mpm
 {
@@ -53,6 +54,48 @@ nlohmann::json stageMetrics( const StageSummary& stage )
         j["converged"] = stage.converged;
     }
     return j;
+}
+
+//---------------------------------------------------------------------------//
+void PorePressureExtremes::add( const HostSnapshot& snapshot,
+                                const double time_s )
+{
+    if ( snapshot.p_w.empty() )
+        return;
+    std::vector<double> p_w;
+    p_w.reserve( snapshot.p_w.size() );
+    for ( std::size_t p = 0; p < snapshot.p_w.size(); ++p )
+        if ( snapshot.status[p] == point_active )
+            p_w.push_back( snapshot.p_w[p] );
+    if ( p_w.empty() )
+        return;
+    // The 99th percentile as the value of rank floor(0.99 (n - 1)).
+    const std::size_t rank =
+        static_cast<std::size_t>( 0.99 * ( p_w.size() - 1 ) );
+    std::nth_element( p_w.begin(), p_w.begin() + rank, p_w.end() );
+    const double p99 = p_w[rank];
+    const double largest = *std::max_element( p_w.begin() + rank, p_w.end() );
+    if ( largest > max_pa )
+    {
+        max_pa = largest;
+        max_time_s = time_s;
+    }
+    if ( p99 > p99_pa )
+    {
+        p99_pa = p99;
+        p99_time_s = time_s;
+    }
+    seen = true;
+}
+
+void PorePressureExtremes::write( nlohmann::json& metrics ) const
+{
+    if ( !seen )
+        return;
+    metrics["pore_pressure_max_pa"] = max_pa;
+    metrics["pore_pressure_max_time_s"] = max_time_s;
+    metrics["pore_pressure_p99_pa"] = p99_pa;
+    metrics["pore_pressure_p99_time_s"] = p99_time_s;
 }
 
 } // namespace mpm

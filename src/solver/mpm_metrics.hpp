@@ -13,6 +13,26 @@ namespace mpm
 nlohmann::json deformationMetrics( const HostSnapshot& snapshot,
                                    double moved_threshold_m );
 
+/*!
+  \brief The largest pore pressure and the largest 99th percentile of the
+  active points' p_w over the snapshots it has seen (two-phase), Pa, with
+  the simulated times at which they occurred.
+*/
+struct PorePressureExtremes
+{
+    double max_pa = -1.0e300;
+    double max_time_s = 0.0;
+    double p99_pa = -1.0e300;
+    double p99_time_s = 0.0;
+    bool seen = false;
+
+    //! Takes in the snapshot at simulated time `time_s`.
+    void add( const HostSnapshot& snapshot, double time_s );
+    //! The metrics.json keys pore_pressure_max_pa, pore_pressure_p99_pa
+    //! and their times (nothing if no two-phase snapshot was seen).
+    void write( nlohmann::json& metrics ) const;
+};
+
 //! JSON of one stage summary.
 nlohmann::json stageMetrics( const StageSummary& stage );
 

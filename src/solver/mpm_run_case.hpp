@@ -90,6 +90,7 @@ class OutputObserver : public RunObserver
                      const HostSnapshot& snapshot ) override
     {
         writeSnapshot( _writer, progress, snapshot );
+        pore_pressure.add( snapshot, progress.time_s );
         last_snapshot = snapshot;
     }
     void onStageEnd( const RunProgress& progress,
@@ -146,6 +147,8 @@ class OutputObserver : public RunObserver
     }
 
     HostSnapshot last_snapshot;
+    //! p_w extremes over this session's snapshots (two-phase).
+    PorePressureExtremes pore_pressure;
     ProbeRecorder* probes = nullptr; //!< tracked points, if the case has any
     int checkpoints_written = 0;
     double checkpoint_write_s_total = 0.0; //!< wall time writing them
@@ -329,6 +332,7 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage ) );
+    observer.pore_pressure.write( metrics );
     if ( observer.last_snapshot.num_points > 0 )
         metrics["deformation"] =
             deformationMetrics( observer.last_snapshot, 0.05 );

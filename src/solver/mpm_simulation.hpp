@@ -3,6 +3,7 @@
 
 #include <io/mpm_case_config.hpp>
 #include <mpm_base_cells.hpp>
+#include <mpm_cell_equilibrium.hpp>
 #include <mpm_diagnostics.hpp>
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
@@ -16,6 +17,7 @@
 #include <mpm_timestep.hpp>
 #include <mpm_velocity_gradient.hpp>
 #include <mpm_water_views.hpp>
+#include <setup/mpm_base_slivers.hpp>
 #include <solver/mpm_diagnosis.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_setup.hpp>
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -78,6 +81,8 @@ class Simulation
         , water( waterParams( config.water ) )
         , solver( config.solver )
         , grid_config( config.grid )
+        , _points_per_cell( config.points_per_cell_per_direction *
+                            config.points_per_cell_per_direction )
     {
         const InitialPoints points = generatePoints( config );
         if ( points.size() == 0 )
@@ -94,6 +99,9 @@ class Simulation
                 TwoPhaseNodeSums<ExecSpace>( "p2g_two_phase", num_nodes );
             _two_phase_momentum =
                 TwoPhaseMomentumSums<ExecSpace>( "remap_two_phase", num_nodes );
+            if ( solver.cell_equilibrium )
+                _cell_lists = CellPointLists<ExecSpace>(
+                    points.size(), grid.geometry.nx * grid.geometry.ny );
         }
         else
         {
@@ -114,13 +122,21 @@ class Simulation
     {
         stateChanged();
         materials = makeMaterialTable( stage.materials );
-        copyNodeFlags( nodeFlags( grid_config, stage.boundaries ),
-                       grid.flags_i );
-        if ( solver.base_cell_completion )
-            _base_cells = BaseCells<ExecSpace>( grid.geometry, grid.flags_i );
+        std::vector<int> flags = nodeFlags( grid_config, stage.boundaries );
+        std::vector<int> water_flags;
         if ( twoPhase() )
-            copyNodeFlags( waterNodeFlags( grid_config, stage.boundaries ),
-                           water_grid.flags_w_i );
+            water_flags = waterNodeFlags( grid_config, stage.boundaries );
+        const std::vector<double> x = activePositions();
+        // Two-phase only for now: the dry step has no completion either.
+        const bool complete = solver.base_cell_completion && twoPhase();
+        if ( complete )
+            fixBaseSlivers( grid_config, x, flags, &water_flags );
+        copyNodeFlags( flags, grid.flags_i );
+        if ( complete )
+            _base_cells = BaseCells<ExecSpace>( grid.geometry, grid.flags_i, x,
+                                                _points_per_cell );
+        if ( twoPhase() )
+            copyNodeFlags( water_flags, water_grid.flags_w_i );
         conditions.apply( stage, particles, water_particles, grid_config );
     }
 
@@ -301,7 +317,8 @@ class Simulation
                          materials, water, settings.gravity_x,
                          settings.gravity_y, conditions.load_force,
                          _two_phase_sums, base );
-        baseCellForces( exec, _base_cells, grid.geometry );
+        baseCellForces( exec, _base_cells, grid.geometry, settings.gravity_x,
+                        settings.gravity_y, water.density );
         gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
                             settings.damping, water.density, water.viscosity,
                             solver.inertia_scaling, base );
@@ -309,6 +326,7 @@ class Simulation
                                   water_grid, dt, stepFlipFraction( dt ),
                                   water.density, _two_phase_momentum );
         remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum );
+        baseCellRates( exec, _base_cells, grid, water_grid, water.density );
         if ( solver.bbar )
             cellAverages( exec );
         const bool saturated = analysis == AnalysisType::Saturated;
@@ -319,10 +337,31 @@ class Simulation
         const PointUpdateReport report = updatePointsTwoPhase(
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,
-            pore_pressure );
+            pore_pressure, base );
+        if ( solver.cell_equilibrium )
+            cellWaterEquilibrium( exec, particles, water_particles,
+                                  grid.geometry, materials, water, saturated,
+                                  _cell_lists );
         // S_p and dS_dp_p now hold the retention law at p_w_p.
         _retention_current = !saturated;
         return report;
+    }
+
+    //! Positions (x, y) of the active points, on the host.
+    std::vector<double> activePositions() const
+    {
+        const auto x_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), particles.x_p );
+        const auto status_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), particles.status_p );
+        std::vector<double> x;
+        for ( int p = 0; p < particles.size(); ++p )
+            if ( status_h( p ) == point_active )
+            {
+                x.push_back( x_h( p, 0 ) );
+                x.push_back( x_h( p, 1 ) );
+            }
+        return x;
     }
 
     void copyNodeFlags( const std::vector<int>& flags,
@@ -342,6 +381,10 @@ class Simulation
     TwoPhaseNodeSums<ExecSpace> _two_phase_sums;
     TwoPhaseMomentumSums<ExecSpace> _two_phase_momentum;
     CellSums<ExecSpace> _cell_sums;
+    //! The points of each cell (cell water equilibrium).
+    CellPointLists<ExecSpace> _cell_lists;
+    //! Points a full cell holds.
+    int _points_per_cell = 4;
     //! Cells cut by the fixed base (their divergence completed).
     BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).

@@ -94,7 +94,7 @@ double checkerboard( const mpm::HostSnapshot& snap, const double h )
   on a fixed base with rollers, loaded on the left half of its top by
   20 kPa ramped over 0.05 s, with damping to a quasi-static state.
 */
-mpm::CaseConfig footingCase( const bool bbar )
+mpm::CaseConfig footingCase( const bool bbar, const bool cell_equilibrium )
 {
     mpm::StageConfig stage;
     stage.name = "footing";
@@ -117,6 +117,7 @@ mpm::CaseConfig footingCase( const bool bbar )
     load.time_function = { { 0.0, 0.0 }, { 0.05, 1.0 } };
     c.stages[0].loads = { load };
     c.solver.bbar = bbar;
+    c.solver.cell_equilibrium = cell_equilibrium;
     return c;
 }
 
@@ -126,27 +127,36 @@ mpm::CaseConfig footingCase( const bool bbar )
 // response produces with point-wise divergences.
 TYPED_TEST( BBar, reduces_pore_pressure_checkerboard )
 {
-    double metric[2], intra[2];
-    for ( const bool bbar : { false, true } )
+    // Point-wise p_w (no stabilisation), B-bar, the cell water equilibrium
+    // (the default, physics::CellWaterEquilibrium).
+    const bool bbar[3] = { false, true, false };
+    const bool equilibrium[3] = { false, false, true };
+    double metric[3], intra[3];
+    for ( int v = 0; v < 3; ++v )
     {
-        auto config = footingCase( bbar );
+        auto config = footingCase( bbar[v], equilibrium[v] );
         mpm::Simulation<TypeParam> sim( config );
         mpm::RunObserver observer;
         mpm::runStages( sim, config, observer );
         const auto snap = mpm::hostSnapshot( sim );
-        metric[bbar] = checkerboard( snap, 0.1 );
-        intra[bbar] = intraCell( snap, 0.1 );
+        metric[v] = checkerboard( snap, 0.1 );
+        intra[v] = intraCell( snap, 0.1 );
     }
-    std::printf( "p_w checkerboard: cells %.4f / %.4f, points in a cell "
-                 "%.4f / %.4f (without / with B-bar)\n",
-                 metric[0], metric[1], intra[0], intra[1] );
-    // Without B-bar the points of a cell oscillate by as much as p_w itself;
-    // with it they share the cell's volumetric rates and p_w.
+    std::printf( "p_w checkerboard: cells %.4f / %.4f / %.4f, points in a "
+                 "cell %.4f / %.4f / %.4f (point-wise / B-bar / cell "
+                 "equilibrium)\n",
+                 metric[0], metric[1], metric[2], intra[0], intra[1],
+                 intra[2] );
+    // Point-wise, the points of a cell oscillate by as much as p_w itself;
+    // with B-bar they share the cell's volumetric rates and p_w, with the
+    // cell equilibrium its water.
     EXPECT_GT( intra[0], 0.2 );
     EXPECT_LT( intra[1], 0.01 * intra[0] );
-    // Between cells the field is smooth either way (the metric is the
-    // curvature of the footing's pressure bulb).
+    EXPECT_LT( intra[2], 0.01 * intra[0] );
+    // Between cells the field is smooth (the metric is the curvature of
+    // the footing's pressure bulb).
     EXPECT_LT( metric[1], 0.05 );
+    EXPECT_LT( metric[2], 0.05 );
 }
 
 } // namespace

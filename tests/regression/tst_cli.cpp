@@ -203,4 +203,63 @@ TEST( Cli, total_stress_slope_runs_to_completion )
                1.0 );
 }
 
+//---------------------------------------------------------------------------//
+// A two-phase run reports the largest p_w and 99th percentile over its
+// snapshots: a saturated column 2 m high, hydrostatic from its top, holds
+// rho_w g 1.75 m in its bottom cell (one p_w per cell, that of the cell's
+// centre, 0.25 m up); its grains are as dense as water, so the skeleton
+// has no buoyant weight to put on the water.
+TEST( Cli, two_phase_run_reports_pore_pressure_extremes )
+{
+    const fs::path dir = freshDir( "pore_pressure" );
+    const fs::path file = writeCase( dir, R"(
+[case]
+name = "hydrostatic_column"
+analysis = "saturated"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.5
+cells = [1, 5]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 1000.0
+porosity = 0.3
+permeability_m2 = 1.0e-10
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.3
+[[bodies]]
+material = "soil"
+polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
+initial_pore_pressure_pa = 19620.0
+initial_pore_pressure_gradient_pa_per_m = -9810.0
+[[boundaries]]
+where = "bottom"
+condition = "fixed"
+[[boundaries]]
+where = "left"
+condition = "fix_x"
+[[boundaries]]
+where = "right"
+condition = "fix_x"
+[[stages]]
+name = "settle"
+type = "quasi_static"
+duration_s = 0.5
+snapshot_interval_s = 0.1
+)" );
+    const auto result =
+        runCommand( "run " + file.string() + " --out " +
+                    ( dir / "out" ).string() + " --backend serial" );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    std::ifstream in( dir / "out" / "metrics.json" );
+    const auto metrics = nlohmann::json::parse( in );
+    ASSERT_TRUE( metrics.contains( "pore_pressure_max_pa" ) );
+    const double p_max = metrics["pore_pressure_max_pa"];
+    const double p99 = metrics["pore_pressure_p99_pa"];
+    EXPECT_NEAR( p_max, 9810.0 * 1.75, 0.01 * p_max );
+    EXPECT_LE( p99, p_max );
+    EXPECT_GT( p99, 0.8 * p_max );
+}
+
 } // namespace
