@@ -81,26 +81,15 @@ struct BaseCells
     BaseCells() = default;
 
     /*!
-      The base cells of the solid's node flags (NodeFlag, nx+1 x ny+1): the
-      cells with fixed and free nodes that hold fewer than `full` points
-      (x: the points' positions, x and y per point). A full cell next to
-      fixed nodes (a base on a grid line) needs no completion; its points'
-      volumes follow the strain, and counting a compressed cell as cut
-      would add spurious forces and water.
+      The base cells: those flagged in `cut` (one flag per cell, index
+      ci * ny + cj, e.g. cutBaseCells) that have a node fixed in x and y
+      (NodeFlag node_fixed in `flags_i`) and one that is not.
     */
     BaseCells( const physics::GridGeometry& grid, const int_view& flags_i,
-               const std::vector<double>& x, const int full )
+               const std::vector<int>& cut )
     {
         auto flags =
             Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), flags_i );
-        std::vector<int> count( static_cast<std::size_t>( grid.nx ) * grid.ny,
-                                0 );
-        for ( std::size_t p = 0; p + 1 < x.size(); p += 2 )
-        {
-            int ci, cj;
-            if ( grid.cellOf( x[p], x[p + 1], ci, cj ) )
-                ++count[ci * grid.ny + cj];
-        }
         std::vector<int> cells;
         for ( int i = 0; i < grid.nx; ++i )
             for ( int j = 0; j < grid.ny; ++j )
@@ -109,7 +98,7 @@ struct BaseCells
                 for ( int k = 0; k < 4; ++k )
                     fixed += ( flags( i + ( k & 1 ), j + ( k >> 1 ) ) &
                                node_fixed ) == node_fixed;
-                if ( fixed > 0 && fixed < 4 && count[i * grid.ny + j] < full )
+                if ( cut[i * grid.ny + j] && fixed > 0 && fixed < 4 )
                     cells.push_back( i * grid.ny + j );
             }
         num_cells = static_cast<int>( cells.size() );

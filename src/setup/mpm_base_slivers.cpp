@@ -1,7 +1,9 @@
 #include <setup/mpm_base_slivers.hpp>
+#include <setup/mpm_geometry.hpp>
 
 #include <mpm_device_type.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mpm
@@ -60,6 +62,48 @@ int fixBaseSlivers( const GridConfig& grid, const std::vector<double>& x,
             }
     }
     return num_fixed;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<int> cutBaseCells( const GridConfig& grid,
+                               const std::vector<BoundaryConfig>& boundaries )
+{
+    const int nx = grid.cells[0];
+    const int ny = grid.cells[1];
+    const double h = grid.cell_size_m;
+    const double tolerance = 1.0e-9 * h;
+    std::vector<int> cut( static_cast<std::size_t>( nx ) * ny, 0 );
+    for ( const BoundaryConfig& bc : boundaries )
+    {
+        if ( bc.where != BoundarySelector::BelowPolyline ||
+             !bc.constrains_solid || bc.condition != BoundaryCondition::Fixed )
+            continue;
+        for ( int ci = 0; ci < nx; ++ci )
+        {
+            // The line's range of y over the column of cells: at its ends
+            // and at the vertices inside it.
+            const double x0 = grid.origin_m[0] + ci * h;
+            const double x1 = x0 + h;
+            double y_lo = std::min( geometry::polylineY( bc.polyline_m, x0 ),
+                                    geometry::polylineY( bc.polyline_m, x1 ) );
+            double y_hi = std::max( geometry::polylineY( bc.polyline_m, x0 ),
+                                    geometry::polylineY( bc.polyline_m, x1 ) );
+            for ( const Point2& v : bc.polyline_m )
+                if ( v[0] > x0 && v[0] < x1 )
+                {
+                    y_lo = std::min( y_lo, v[1] );
+                    y_hi = std::max( y_hi, v[1] );
+                }
+            for ( int cj = 0; cj < ny; ++cj )
+            {
+                const double y0 = grid.origin_m[1] + cj * h;
+                const double y1 = y0 + h;
+                if ( y_hi > y0 + tolerance && y_lo < y1 - tolerance )
+                    cut[ci * ny + cj] = 1;
+            }
+        }
+    }
+    return cut;
 }
 
 } // namespace mpm

@@ -24,6 +24,15 @@ namespace mpm
 int fixBaseSlivers( const GridConfig& grid, const std::vector<double>& x,
                     std::vector<int>& flags, std::vector<int>* water_flags );
 
+/*!
+  \brief The cells a fixed `below_polyline` boundary line passes through
+  (strictly inside: a line on a grid line cuts no cell), as a flag per cell
+  (index ci * ny + cj): the cells physics::BaseCellCompletion completes.
+  From the case alone, so a restarted run finds the same cells.
+*/
+std::vector<int> cutBaseCells( const GridConfig& grid,
+                               const std::vector<BoundaryConfig>& boundaries );
+
 } // namespace mpm
 
 #endif // MPM_BASE_SLIVERS_HPP

@@ -245,6 +245,7 @@ void restoreCheckpoint( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                   "' (written by another version?)" );
                           fromCheckpointArray( *a, view );
                       } );
+    sim.flagsRestored();
     if ( loop.stage_started )
     {
         StageConditions<ExecSpace>& conditions = sim.conditions;

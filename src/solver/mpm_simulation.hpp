@@ -81,8 +81,6 @@ class Simulation
         , water( waterParams( config.water ) )
         , solver( config.solver )
         , grid_config( config.grid )
-        , _points_per_cell( config.points_per_cell_per_direction *
-                            config.points_per_cell_per_direction )
     {
         const InitialPoints points = generatePoints( config );
         if ( points.size() == 0 )
@@ -126,15 +124,17 @@ class Simulation
         std::vector<int> water_flags;
         if ( twoPhase() )
             water_flags = waterNodeFlags( grid_config, stage.boundaries );
-        const std::vector<double> x = activePositions();
         // Two-phase only for now: the dry step has no completion either.
+        // (A restart re-applies the stage before it restores the flags:
+        // the slivers it finds then do not matter.)
         const bool complete = solver.base_cell_completion && twoPhase();
         if ( complete )
-            fixBaseSlivers( grid_config, x, flags, &water_flags );
+            fixBaseSlivers( grid_config, activePositions(), flags,
+                            &water_flags );
         copyNodeFlags( flags, grid.flags_i );
-        if ( complete )
-            _base_cells = BaseCells<ExecSpace>( grid.geometry, grid.flags_i, x,
-                                                _points_per_cell );
+        _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
+                              : std::vector<int>();
+        flagsRestored();
         if ( twoPhase() )
             copyNodeFlags( water_flags, water_grid.flags_w_i );
         conditions.apply( stage, particles, water_particles, grid_config );
@@ -238,6 +238,16 @@ class Simulation
     {
         _diagnostics_step = -1;
         _retention_current = false;
+    }
+
+    //! Rebuilds what derives from the node flags (the base cells) after
+    //! they were set or restored (restoreCheckpoint).
+    void flagsRestored()
+    {
+        _base_cells = _cut_cells.empty()
+                          ? BaseCells<ExecSpace>()
+                          : BaseCells<ExecSpace>( grid.geometry, grid.flags_i,
+                                                  _cut_cells );
     }
 
     //! Sets the reference positions to the current ones (x0 = x).
@@ -383,8 +393,9 @@ class Simulation
     CellSums<ExecSpace> _cell_sums;
     //! The points of each cell (cell water equilibrium).
     CellPointLists<ExecSpace> _cell_lists;
-    //! Points a full cell holds.
-    int _points_per_cell = 4;
+    //! The stage's cells cut by a fixed base line (cutBaseCells; empty
+    //! without base_cell_completion or in a dry scene).
+    std::vector<int> _cut_cells;
     //! Cells cut by the fixed base (their divergence completed).
     BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).
