@@ -52,11 +52,13 @@ struct BaseCellKept
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The cells cut by a fixed base (a node fixed in x and y and a node
-  that is not) and the forces that complete their stress divergence
-  (physics::BaseCellCompletion). The step's P2G adds its points' sums
-  (addPoint), baseCellForces turns them into corner forces, the grid update
-  adds those to the nodes (addNodeForces). Empty when no node is fixed.
+  \brief The cells a fixed base line cuts (with a node fixed in x and y
+  and one that is not) and what completes them (physics::BaseCellCompletion):
+  the step's P2G adds its points' sums (addPoint), baseCellForces turns
+  them into corner forces (divergence and weight of the empty part), the
+  grid update adds those to the nodes (addNodeForces), baseCellRates gives
+  the empty part's water balance to the cell's points (extraRate). Empty
+  without cut cells.
 */
 template <class ExecSpace>
 struct BaseCells
