@@ -98,8 +98,8 @@ struct BaseCells
             {
                 int fixed = 0;
                 for ( int k = 0; k < 4; ++k )
-                    fixed += ( flags( i + ( k & 1 ), j + ( k >> 1 ) ) &
-                               node_fixed ) == node_fixed;
+                    fixed +=
+                        fullyFixed( flags( i + ( k & 1 ), j + ( k >> 1 ) ) );
                 if ( cut[i * grid.ny + j] && fixed > 0 && fixed < 4 )
                     cells.push_back( i * grid.ny + j );
             }

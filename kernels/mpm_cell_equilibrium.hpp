@@ -16,7 +16,8 @@ namespace mpm
 //---------------------------------------------------------------------------//
 /*!
   \brief Working storage of the cell equilibrium: the points of each cell
-  as a compressed list (offset_c, points_c), rebuilt every step.
+  as a compressed list (offset_c, points_c), rebuilt every step, and each
+  point's change of water volume in the step's equilibrium (change_p).
 */
 template <class ExecSpace>
 struct CellPointLists
@@ -26,6 +27,7 @@ struct CellPointLists
     Kokkos::View<int*, device_type> offset_c; //!< nx * ny + 1 offsets
     Kokkos::View<int*, device_type> fill_c;   //!< fill cursor per cell
     Kokkos::View<int*, device_type> points_c; //!< point indices by cell
+    Kokkos::View<double*, device_type> change_p; //!< water volume change, m^3
 
     CellPointLists() = default;
     CellPointLists( const int num_points, const int num_cells )
@@ -33,6 +35,7 @@ struct CellPointLists
         , offset_c( "offset_c", num_cells + 1 )
         , fill_c( "fill_c", num_cells )
         , points_c( "points_c", num_points )
+        , change_p( "water_change_p", num_points )
     {
     }
     bool allocated() const { return cell_p.extent( 0 ) > 0; }
@@ -45,8 +48,9 @@ struct CellPointLists
   (count, scan, fill, then each cell's list in index order so that the
   result does not depend on the threads), solves each cell's common
   pressure and sets it, with the retention state, on the cell's points
-  whose p_w is not prescribed; the water that moves between them carries
-  its momentum (the takers' v_w becomes the mass-weighted mean).
+  whose p_w is not prescribed (a cell whose points already share one is
+  left as it is); the water that moves between them carries its momentum
+  (the takers' v_w becomes the mass-weighted mean).
 */
 template <class ExecSpace>
 void cellWaterEquilibrium(
@@ -71,6 +75,7 @@ void cellWaterEquilibrium(
     const auto offset_c = unmanaged( lists.offset_c );
     const auto fill_c = unmanaged( lists.fill_c );
     const auto points_c = unmanaged( lists.points_c );
+    const auto change_p = unmanaged( lists.change_p );
     const int ny = grid.ny;
     const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
 
@@ -135,49 +140,55 @@ void cellWaterEquilibrium(
                     vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ),
                     &materials[material_p( p )].retention };
             };
-            const double p_bar = equilibrium.solve( end - begin, point );
+            bool changed = false;
+            const double p_bar =
+                equilibrium.solve( end - begin, point, changed );
+            if ( !changed )
+                return;
             if ( saturated )
             {
                 for ( int a = begin; a < end; ++a )
                     p_w_p( points_c( a ) ) = p_bar;
                 return;
             }
-            // The water that moves between the points carries its momentum:
-            // the points that give water keep their velocity, those that
-            // take it get the mass-weighted mean with the given water's.
+            // The new state of each point and the water it gives or takes.
             double given = 0.0, given_v[2] = { 0.0, 0.0 };
-            for ( int a = begin; a < end; ++a )
-            {
-                const int p = points_c( a );
-                const double S_new =
-                    RetentionAt{ materials[material_p( p )].retention }( p_bar )
-                        .S;
-                const double change =
-                    vol_p( p ) * n_p( p ) * ( S_new - S_p( p ) );
-                if ( change < 0.0 )
-                {
-                    given -= change;
-                    given_v[0] -= change * v_w_p( p, 0 );
-                    given_v[1] -= change * v_w_p( p, 1 );
-                }
-            }
             for ( int a = begin; a < end; ++a )
             {
                 const int p = points_c( a );
                 const physics::RetentionState state =
                     RetentionAt{ materials[material_p( p )].retention }.state(
                         p_bar );
-                const double before = vol_p( p ) * n_p( p ) * S_p( p );
-                const double change = vol_p( p ) * n_p( p ) * state.S - before;
-                if ( change > 0.0 && given > 0.0 )
-                    for ( int d = 0; d < 2; ++d )
-                        v_w_p( p, d ) = ( before * v_w_p( p, d ) +
-                                          change * given_v[d] / given ) /
-                                        ( before + change );
+                const double change =
+                    vol_p( p ) * n_p( p ) * ( state.S - S_p( p ) );
+                change_p( p ) = change;
+                if ( change < 0.0 )
+                {
+                    given -= change;
+                    given_v[0] -= change * v_w_p( p, 0 );
+                    given_v[1] -= change * v_w_p( p, 1 );
+                }
                 p_w_p( p ) = p_bar;
                 S_p( p ) = state.S;
                 dS_dp_p( p ) = state.dS_dp;
                 k_rel_p( p ) = state.k_rel;
+            }
+            // The water that moves between the points carries its momentum:
+            // the points that give water keep their velocity, those that
+            // take it get the mass-weighted mean with the given water's.
+            if ( !( given > 0.0 ) )
+                return;
+            for ( int a = begin; a < end; ++a )
+            {
+                const int p = points_c( a );
+                const double change = change_p( p );
+                if ( !( change > 0.0 ) )
+                    continue;
+                const double after = vol_p( p ) * n_p( p ) * S_p( p );
+                for ( int d = 0; d < 2; ++d )
+                    v_w_p( p, d ) = ( ( after - change ) * v_w_p( p, d ) +
+                                      change * given_v[d] / given ) /
+                                    after;
             }
         } );
 }

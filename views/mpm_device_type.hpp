@@ -46,6 +46,12 @@ enum NodeFlag : int
     node_fixed = 3
 };
 
+//! True if a node's flags fix both directions of its solid.
+KOKKOS_INLINE_FUNCTION bool fullyFixed( const int flags )
+{
+    return ( flags & node_fixed ) == node_fixed;
+}
+
 } // namespace mpm
 
 #endif // MPM_DEVICE_TYPE_HPP

@@ -260,10 +260,11 @@ struct CellWaterEquilibrium
         const RetentionParams* retention;
     };
 
-    //! The common pressure P of the `count` points point(0..count).
+    //! The common pressure P of the `count` points point(0..count);
+    //! `changed` is false if they already share one (P is then theirs).
     template <class PointAt>
-    KOKKOS_INLINE_FUNCTION double solve( const int count,
-                                         const PointAt& point ) const
+    KOKKOS_INLINE_FUNCTION double solve( const int count, const PointAt& point,
+                                         bool& changed ) const
     {
         namespace KE = Kokkos::Experimental;
         double lo = 1.0e300, hi = -1.0e300, weighted = 0.0, weight = 0.0;
@@ -275,7 +276,8 @@ struct CellWaterEquilibrium
             weighted += q.a * q.S * q.p_w;
             weight += q.a * q.S;
         }
-        if ( !( hi - lo > 1.0e-9 * ( KE::fabs( hi ) + 1.0 ) ) )
+        changed = hi - lo > 1.0e-9 * ( KE::fabs( hi ) + 1.0 );
+        if ( !changed )
             return lo;
         double P = weight > 0.0 ? weighted / weight : 0.5 * ( lo + hi );
         P = P > lo && P < hi ? P : 0.5 * ( lo + hi );

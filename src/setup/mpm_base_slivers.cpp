@@ -4,31 +4,26 @@
 #include <mpm_device_type.hpp>
 
 #include <algorithm>
-#include <cmath>
 
 namespace mpm
 {
-int fixBaseSlivers( const GridConfig& grid, const std::vector<double>& x,
-                    std::vector<int>& flags, std::vector<int>* water_flags )
+int fixBaseSlivers( const physics::GridGeometry& grid,
+                    const std::vector<double>& x, std::vector<int>& flags,
+                    std::vector<int>* water_flags )
 {
-    const int nx = grid.cells[0];
-    const int ny = grid.cells[1];
+    const int nx = grid.nx;
+    const int ny = grid.ny;
     const int ny1 = ny + 1;
-    const double h = grid.cell_size_m;
     std::vector<int> points( static_cast<std::size_t>( nx ) * ny, 0 );
     for ( std::size_t p = 0; p + 1 < x.size(); p += 2 )
     {
-        const int ci =
-            static_cast<int>( std::floor( ( x[p] - grid.origin_m[0] ) / h ) );
-        const int cj = static_cast<int>(
-            std::floor( ( x[p + 1] - grid.origin_m[1] ) / h ) );
-        if ( ci >= 0 && ci < nx && cj >= 0 && cj < ny )
+        int ci, cj;
+        if ( grid.cellOf( x[p], x[p + 1], ci, cj ) )
             ++points[ci * ny + cj];
     }
     const auto node = [&]( const int ci, const int cj, const int k )
     { return ( ci + ( k & 1 ) ) * ny1 + cj + ( k >> 1 ); };
-    const auto fixed = [&]( const int n )
-    { return ( flags[n] & node_fixed ) == node_fixed; };
+    const auto fixed = [&]( const int n ) { return fullyFixed( flags[n] ); };
     int num_fixed = 0;
     for ( bool changed = true; changed; )
     {

@@ -2,6 +2,7 @@
 #define MPM_BASE_SLIVERS_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <physics/mpm_grid_geometry.hpp>
 
 #include <vector>
 
@@ -21,8 +22,9 @@ namespace mpm
   (x, y per point, m); `water_flags` may be null (dry scenes).
   \return the number of nodes fixed.
 */
-int fixBaseSlivers( const GridConfig& grid, const std::vector<double>& x,
-                    std::vector<int>& flags, std::vector<int>* water_flags );
+int fixBaseSlivers( const physics::GridGeometry& grid,
+                    const std::vector<double>& x, std::vector<int>& flags,
+                    std::vector<int>* water_flags );
 
 /*!
   \brief The cells a fixed `below_polyline` boundary line passes through

@@ -129,7 +129,7 @@ class Simulation
         // the slivers it finds then do not matter.)
         const bool complete = solver.base_cell_completion && twoPhase();
         if ( complete )
-            fixBaseSlivers( grid_config, activePositions(), flags,
+            fixBaseSlivers( grid.geometry, activePositions(), flags,
                             &water_flags );
         copyNodeFlags( flags, grid.flags_i );
         _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
