@@ -5,6 +5,7 @@
 #include <mpm_particle_views.hpp>
 #include <mpm_pore_pressure.hpp>
 #include <mpm_water_views.hpp>
+#include <physics/mpm_cell_pressure_slope.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_material_params.hpp>
 #include <physics/mpm_two_phase.hpp>
@@ -16,17 +17,24 @@ namespace mpm
 //---------------------------------------------------------------------------//
 /*!
   \brief Working storage of the cell equilibrium: the points of each cell
-  as a compressed list (offset_c, points_c), rebuilt every step, and each
-  point's change of water volume in the step's equilibrium (change_p).
+  as a compressed list (offset_c, points_c; those with a free p_w first),
+  rebuilt every step, each cell's mean p_w and point centre (level_c,
+  centre_c), limited pressure slope (slope_c) and the range its profile may
+  span (bound_c), and each point's change
+  of water volume in the step's equilibrium (change_p).
 */
 template <class ExecSpace>
 struct CellPointLists
 {
     using device_type = DeviceType<ExecSpace>;
-    Kokkos::View<int*, device_type> cell_p;   //!< cell of each point, -1 none
-    Kokkos::View<int*, device_type> offset_c; //!< nx * ny + 1 offsets
-    Kokkos::View<int*, device_type> fill_c;   //!< fill cursor per cell
-    Kokkos::View<int*, device_type> points_c; //!< point indices by cell
+    Kokkos::View<int*, device_type> cell_p;     //!< cell of each point, -1 none
+    Kokkos::View<int*, device_type> offset_c;   //!< nx * ny + 1 offsets
+    Kokkos::View<int*, device_type> fill_c;     //!< fill cursor per cell
+    Kokkos::View<int*, device_type> points_c;   //!< point indices by cell
+    Kokkos::View<double*, device_type> level_c; //!< mean p_w, Pa
+    Kokkos::View<double* [2], device_type> centre_c; //!< mean x_p, m
+    Kokkos::View<double* [2], device_type> slope_c;  //!< dp_w/dx, Pa/m
+    Kokkos::View<double* [2], device_type> bound_c;  //!< p_w range, Pa
     Kokkos::View<double*, device_type> change_p; //!< water volume change, m^3
 
     CellPointLists() = default;
@@ -35,6 +43,10 @@ struct CellPointLists
         , offset_c( "offset_c", num_cells + 1 )
         , fill_c( "fill_c", num_cells )
         , points_c( "points_c", num_points )
+        , level_c( "level_c", num_cells )
+        , centre_c( "centre_c", num_cells )
+        , slope_c( "slope_c", num_cells )
+        , bound_c( "bound_c", num_cells )
         , change_p( "water_change_p", num_points )
     {
     }
@@ -43,57 +55,43 @@ struct CellPointLists
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief physics::CellWaterEquilibrium on every cell (points at their new
-  positions, after the step's point update): lists the points of each cell
-  (count, scan, fill, then each cell's list in index order so that the
-  result does not depend on the threads), solves each cell's common
-  pressure and sets it, with the retention state, on the cell's points
-  whose p_w is not prescribed (a cell whose points already share one is
-  left as it is); the water that moves between them carries its momentum
-  (the takers' v_w becomes the mass-weighted mean).
+  \brief Lists the active points of each cell (count, scan, fill, then
+  each cell's list sorted: the points with a free p_w first, each group in
+  index order, so that the result does not depend on the threads).
 */
 template <class ExecSpace>
-void cellWaterEquilibrium(
-    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
-    const WaterParticleViews<ExecSpace>& wv, const physics::GridGeometry& grid,
-    const physics::MaterialTable& materials, const physics::WaterParams& water,
-    const bool saturated, const CellPointLists<ExecSpace>& lists )
+void listCellPoints( const ExecSpace& exec_space,
+                     const ParticleViews<ExecSpace>& pv,
+                     const WaterParticleViews<ExecSpace>& wv,
+                     const physics::GridGeometry& grid,
+                     const CellPointLists<ExecSpace>& lists )
 {
     const int num_cells = grid.nx * grid.ny;
+    const int num_points = pv.size();
     const auto x_p = unmanaged( pv.x_p );
-    const auto vol_p = unmanaged( pv.vol_p );
     const auto status_p = unmanaged( pv.status_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto p_w_p = unmanaged( wv.p_w_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto dS_dp_p = unmanaged( wv.dS_dp_p );
-    const auto k_rel_p = unmanaged( wv.k_rel_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto v_w_p = unmanaged( wv.v_w_p );
     const auto condition_p = unmanaged( wv.p_w_condition_p );
     const auto cell_p = unmanaged( lists.cell_p );
     const auto offset_c = unmanaged( lists.offset_c );
     const auto fill_c = unmanaged( lists.fill_c );
     const auto points_c = unmanaged( lists.points_c );
-    const auto change_p = unmanaged( lists.change_p );
     const int ny = grid.ny;
-    const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
 
     Kokkos::deep_copy( exec_space, lists.fill_c, 0 );
     Kokkos::parallel_for(
-        "mpm::cell_equilibrium_count",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        "mpm::cell_points_count",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_points ),
         KOKKOS_LAMBDA( const int p ) {
             int ci, cj;
             cell_p( p ) = -1;
-            if ( status_p( p ) != point_active || condition_p( p ) >= 0 ||
+            if ( status_p( p ) != point_active ||
                  !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
                 return;
             cell_p( p ) = ci * ny + cj;
             Kokkos::atomic_increment( &fill_c( ci * ny + cj ) );
         } );
     Kokkos::parallel_scan(
-        "mpm::cell_equilibrium_offsets",
+        "mpm::cell_points_offsets",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
         KOKKOS_LAMBDA( const int c, int& offset, const bool final ) {
             const int count = fill_c( c );
@@ -107,8 +105,8 @@ void cellWaterEquilibrium(
             offset += count;
         } );
     Kokkos::parallel_for(
-        "mpm::cell_equilibrium_fill",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        "mpm::cell_points_fill",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_points ),
         KOKKOS_LAMBDA( const int p ) {
             const int c = cell_p( p );
             if ( c < 0 )
@@ -117,38 +115,227 @@ void cellWaterEquilibrium(
                       Kokkos::atomic_fetch_add( &fill_c( c ), 1 ) ) = p;
         } );
     Kokkos::parallel_for(
+        "mpm::cell_points_sort",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
+        KOKKOS_LAMBDA( const int c ) {
+            // Insertion sort (a cell holds a few points).
+            const auto key = [&]( const int p )
+            { return p + ( condition_p( p ) >= 0 ? num_points : 0 ); };
+            const int begin = offset_c( c );
+            for ( int a = begin + 1; a < offset_c( c + 1 ); ++a )
+            {
+                const int q = points_c( a );
+                int b = a - 1;
+                for ( ; b >= begin && key( points_c( b ) ) > key( q ); --b )
+                    points_c( b + 1 ) = points_c( b );
+                points_c( b + 1 ) = q;
+            }
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Each cell's mean p_w and point centre over all its points (the
+  prescribed ones too), then its pressure slope along x and y from its face
+  neighbours with points (physics::limitedPressureSlope; centres closer
+  than h/4 along the direction give no difference) and the range its
+  profile may span: its own and its neighbours' means, widened by the
+  profile's reach h/2 |s_d| along a direction without a neighbour on one
+  side (a boundary: the profile extrapolates there).
+*/
+template <class ExecSpace>
+void cellPressureSlopes( const ExecSpace& exec_space,
+                         const ParticleViews<ExecSpace>& pv,
+                         const WaterParticleViews<ExecSpace>& wv,
+                         const physics::GridGeometry& grid,
+                         const CellPointLists<ExecSpace>& lists )
+{
+    const int num_cells = grid.nx * grid.ny;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto p_w_p = unmanaged( wv.p_w_p );
+    const auto offset_c = unmanaged( lists.offset_c );
+    const auto points_c = unmanaged( lists.points_c );
+    const auto level_c = unmanaged( lists.level_c );
+    const auto centre_c = unmanaged( lists.centre_c );
+    const auto slope_c = unmanaged( lists.slope_c );
+    const auto bound_c = unmanaged( lists.bound_c );
+    const int nx = grid.nx, ny = grid.ny;
+    const double min_distance = 0.25 * grid.h;
+    const double reach = 0.5 * grid.h;
+
+    Kokkos::parallel_for(
+        "mpm::cell_pressure_levels",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
+        KOKKOS_LAMBDA( const int c ) {
+            const int begin = offset_c( c );
+            const int count = offset_c( c + 1 ) - begin;
+            double p = 0.0, x = 0.0, y = 0.0;
+            for ( int a = begin; a < begin + count; ++a )
+            {
+                const int q = points_c( a );
+                p += p_w_p( q );
+                x += x_p( q, 0 );
+                y += x_p( q, 1 );
+            }
+            const double inv = count > 0 ? 1.0 / count : 0.0;
+            level_c( c ) = p * inv;
+            centre_c( c, 0 ) = x * inv;
+            centre_c( c, 1 ) = y * inv;
+        } );
+    Kokkos::parallel_for(
+        "mpm::cell_pressure_slopes",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
+        KOKKOS_LAMBDA( const int c ) {
+            slope_c( c, 0 ) = 0.0;
+            slope_c( c, 1 ) = 0.0;
+            bound_c( c, 0 ) = level_c( c );
+            bound_c( c, 1 ) = level_c( c );
+            if ( offset_c( c + 1 ) == offset_c( c ) )
+                return;
+            double extension = 0.0; // towards sides without a neighbour
+            const int index[2] = { c / ny, c % ny };
+            const int extent[2] = { nx, ny };
+            const int stride[2] = { ny, 1 };
+            for ( int d = 0; d < 2; ++d )
+            {
+                bool has[2] = { false, false };
+                double difference[2] = { 0.0, 0.0 };
+                for ( int side = 0; side < 2; ++side )
+                {
+                    const int step = side == 0 ? -1 : 1;
+                    const int i = index[d] + step;
+                    if ( i < 0 || i >= extent[d] )
+                        continue;
+                    const int n = c + step * stride[d];
+                    if ( offset_c( n + 1 ) == offset_c( n ) )
+                        continue;
+                    const double distance = centre_c( n, d ) - centre_c( c, d );
+                    if ( !( step * distance > min_distance ) )
+                        continue;
+                    has[side] = true;
+                    difference[side] =
+                        ( level_c( n ) - level_c( c ) ) / distance;
+                    bound_c( c, 0 ) = level_c( n ) < bound_c( c, 0 )
+                                          ? level_c( n )
+                                          : bound_c( c, 0 );
+                    bound_c( c, 1 ) = level_c( n ) > bound_c( c, 1 )
+                                          ? level_c( n )
+                                          : bound_c( c, 1 );
+                }
+                slope_c( c, d ) = physics::limitedPressureSlope(
+                    has[0], difference[0], has[1], difference[1] );
+                if ( !has[0] || !has[1] )
+                    extension +=
+                        reach * Kokkos::Experimental::fabs( slope_c( c, d ) );
+            }
+            bound_c( c, 0 ) -= extension;
+            bound_c( c, 1 ) += extension;
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief physics::CellWaterEquilibrium on every cell (points at their new
+  positions, after the step's point update): lists the points of each cell,
+  takes each cell's pressure slope from its neighbours (linear_profile;
+  else a uniform pressure), solves each cell's level and sets the profile's
+  pressure, with the retention state, on the cell's points whose p_w is not
+  prescribed (a cell whose points already lie on it is left as it is); the
+  water that moves between them carries its seepage velocity (the takers'
+  v_w - v_s becomes the mass-weighted mean).
+*/
+template <class ExecSpace>
+void cellWaterEquilibrium( const ExecSpace& exec_space,
+                           const ParticleViews<ExecSpace>& pv,
+                           const WaterParticleViews<ExecSpace>& wv,
+                           const physics::GridGeometry& grid,
+                           const physics::MaterialTable& materials,
+                           const physics::WaterParams& water,
+                           const bool saturated, const bool linear_profile,
+                           const CellPointLists<ExecSpace>& lists )
+{
+    listCellPoints( exec_space, pv, wv, grid, lists );
+    if ( linear_profile )
+        cellPressureSlopes( exec_space, pv, wv, grid, lists );
+    else
+        Kokkos::deep_copy( exec_space, lists.slope_c, 0.0 );
+
+    const int num_cells = grid.nx * grid.ny;
+    const auto x_p = unmanaged( pv.x_p );
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto material_p = unmanaged( pv.material_p );
+    const auto p_w_p = unmanaged( wv.p_w_p );
+    const auto S_p = unmanaged( wv.S_p );
+    const auto dS_dp_p = unmanaged( wv.dS_dp_p );
+    const auto k_rel_p = unmanaged( wv.k_rel_p );
+    const auto n_p = unmanaged( wv.n_p );
+    const auto v_w_p = unmanaged( wv.v_w_p );
+    const auto v_s_p = unmanaged( pv.v_p );
+    const auto condition_p = unmanaged( wv.p_w_condition_p );
+    const auto offset_c = unmanaged( lists.offset_c );
+    const auto points_c = unmanaged( lists.points_c );
+    const auto centre_c = unmanaged( lists.centre_c );
+    const auto slope_c = unmanaged( lists.slope_c );
+    const auto bound_c = unmanaged( lists.bound_c );
+    const auto change_p = unmanaged( lists.change_p );
+    const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
+
+    Kokkos::parallel_for(
         "mpm::cell_equilibrium_solve",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
         KOKKOS_LAMBDA( const int c ) {
             const int begin = offset_c( c );
-            const int end = offset_c( c + 1 );
+            int end = begin; // the free points come first
+            while ( end < offset_c( c + 1 ) &&
+                    condition_p( points_c( end ) ) < 0 )
+                ++end;
             if ( end - begin < 2 )
                 return;
-            // Index order (insertion sort; a cell holds a few points).
-            for ( int a = begin + 1; a < end; ++a )
+            // The slope's share: halved until the profile stays within the
+            // cell's range (the retention law is not linear: where a front
+            // crosses the cell, the level that holds the water can sink
+            // the dry side's points below every suction around them).
+            double share = linear_profile ? 1.0 : 0.0;
+            const auto profile = [&]( const int p )
             {
-                const int q = points_c( a );
-                int b = a - 1;
-                for ( ; b >= begin && points_c( b ) > q; --b )
-                    points_c( b + 1 ) = points_c( b );
-                points_c( b + 1 ) = q;
-            }
+                return share *
+                       ( slope_c( c, 0 ) * ( x_p( p, 0 ) - centre_c( c, 0 ) ) +
+                         slope_c( c, 1 ) * ( x_p( p, 1 ) - centre_c( c, 1 ) ) );
+            };
             const auto point = [&]( const int a )
             {
                 const int p = points_c( begin + a );
                 return physics::CellWaterEquilibrium::Point{
-                    vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ),
+                    vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ), profile( p ),
                     &materials[material_p( p )].retention };
             };
             bool changed = false;
-            const double p_bar =
-                equilibrium.solve( end - begin, point, changed );
+            double level = equilibrium.solve( end - begin, point, changed );
+            for ( int attempt = 0; attempt < 4 && share > 0.0; ++attempt )
+            {
+                bool inside = true;
+                const double margin =
+                    1.0e-9 * ( bound_c( c, 1 ) - bound_c( c, 0 ) ) + 1.0e-6;
+                for ( int a = begin; a < end; ++a )
+                {
+                    const double p_w = level + profile( points_c( a ) );
+                    inside = inside && p_w >= bound_c( c, 0 ) - margin &&
+                             p_w <= bound_c( c, 1 ) + margin;
+                }
+                if ( inside )
+                    break;
+                share = attempt < 2 ? 0.5 * share : 0.0;
+                level = equilibrium.solve( end - begin, point, changed );
+            }
             if ( !changed )
                 return;
             if ( saturated )
             {
                 for ( int a = begin; a < end; ++a )
-                    p_w_p( points_c( a ) ) = p_bar;
+                {
+                    const int p = points_c( a );
+                    p_w_p( p ) = level + profile( p );
+                }
                 return;
             }
             // The new state of each point and the water it gives or takes.
@@ -156,26 +343,28 @@ void cellWaterEquilibrium(
             for ( int a = begin; a < end; ++a )
             {
                 const int p = points_c( a );
+                const double p_w = level + profile( p );
                 const physics::RetentionState state =
                     RetentionAt{ materials[material_p( p )].retention }.state(
-                        p_bar );
+                        p_w );
                 const double change =
                     vol_p( p ) * n_p( p ) * ( state.S - S_p( p ) );
                 change_p( p ) = change;
                 if ( change < 0.0 )
                 {
                     given -= change;
-                    given_v[0] -= change * v_w_p( p, 0 );
-                    given_v[1] -= change * v_w_p( p, 1 );
+                    given_v[0] -= change * ( v_w_p( p, 0 ) - v_s_p( p, 0 ) );
+                    given_v[1] -= change * ( v_w_p( p, 1 ) - v_s_p( p, 1 ) );
                 }
-                p_w_p( p ) = p_bar;
+                p_w_p( p ) = p_w;
                 S_p( p ) = state.S;
                 dS_dp_p( p ) = state.dS_dp;
                 k_rel_p( p ) = state.k_rel;
             }
-            // The water that moves between the points carries its momentum:
-            // the points that give water keep their velocity, those that
-            // take it get the mass-weighted mean with the given water's.
+            // The water that moves between the points carries its seepage
+            // velocity w = v_w - v_s: the points that give water keep
+            // theirs, those that take it get the mass-weighted mean with
+            // the given water's (water locked to the solid stays locked).
             if ( !( given > 0.0 ) )
                 return;
             for ( int a = begin; a < end; ++a )
@@ -186,9 +375,11 @@ void cellWaterEquilibrium(
                     continue;
                 const double after = vol_p( p ) * n_p( p ) * S_p( p );
                 for ( int d = 0; d < 2; ++d )
-                    v_w_p( p, d ) = ( ( after - change ) * v_w_p( p, d ) +
+                    v_w_p( p, d ) = v_s_p( p, d ) +
+                                    ( ( after - change ) *
+                                          ( v_w_p( p, d ) - v_s_p( p, d ) ) +
                                       change * given_v[d] / given ) /
-                                    after;
+                                        after;
             }
         } );
 }

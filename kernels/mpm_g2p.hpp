@@ -6,6 +6,8 @@
 #include <mpm_p2g.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
+#include <physics/mpm_material_params.hpp>
+#include <physics/mpm_two_phase.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -38,6 +40,37 @@ KOKKOS_INLINE_FUNCTION double flipPicBlend( const double flip_fraction,
                                             const double v_pic )
 {
     return flip_fraction * ( v + dv ) + ( 1.0 - flip_fraction ) * v_pic;
+}
+
+/*!
+  \brief Two-phase FLIP/PIC update of one velocity component. The solid:
+  flipPicBlend. The water, with `relative` (solver.water_relative_flip): the
+  solid's new velocity plus the seepage velocity w = v_w - v_s, of which
+  the part the grid does not carry keeps `memory` (physics::seepageMemory)
+  of its FLIP update,
+    w' = w_pic + memory (w + dw - w_pic),
+  so the mixture takes the PIC share and the seepage is damped only as the
+  drag damps it (the water's own blend damped it near impermeable
+  boundaries, where the nodal water velocity is held at the solid's: a
+  Gardner column under rain of 0.9 K_s ponded in its top cell); without
+  permeability the water moves with the grid. Else the water's own blend.
+*/
+KOKKOS_INLINE_FUNCTION void
+twoPhaseBlend( const double flip_fraction, const bool relative,
+               const double memory, double& v_s, const double dv_s,
+               const double v_s_pic, double& v_w, const double dv_w,
+               const double v_w_pic )
+{
+    const double v_s_new = flipPicBlend( flip_fraction, v_s, dv_s, v_s_pic );
+    if ( relative )
+    {
+        const double w_pic = v_w_pic - v_s_pic;
+        const double w_flip = ( v_w + dv_w ) - ( v_s + dv_s );
+        v_w = v_s_new + w_pic + memory * ( w_flip - w_pic );
+    }
+    else
+        v_w = flipPicBlend( flip_fraction, v_w, dv_w, v_w_pic );
+    v_s = v_s_new;
 }
 
 //! FLIP/PIC update of point p's velocity v_p from the nodal v_i, dv_i of
@@ -137,8 +170,8 @@ void g2pVelocityRemap( const ExecSpace& exec_space,
 //---------------------------------------------------------------------------//
 /*!
   \brief Two-phase grid-to-particle update and MUSL remap scatter in one
-  point loop: the FLIP/PIC blend of g2pVelocity for the solid (which also
-  sets du_p) and for the water velocity, then both phases' updated momenta
+  point loop: the FLIP/PIC blend of both phases (twoPhaseBlend; du_p as
+  g2pVelocity), then both phases' updated momenta
   into `sums` (mv_s x, y; mv_w x, y), with the water mass
   m_w = n S rho_w V of the point.
 */
@@ -147,7 +180,9 @@ void g2pVelocityRemapTwoPhase(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
     const WaterGridViews<ExecSpace>& wg, const double dt,
-    const double flip_fraction, const double water_density,
+    const double flip_fraction, const bool relative_flip,
+    const physics::MaterialTable& materials, const physics::WaterParams& water,
+    const double inertia_scaling,
     const GridScatter<ExecSpace, 4, Duplication>& scatter )
 {
     const auto sums = scatter.handle();
@@ -166,7 +201,8 @@ void g2pVelocityRemapTwoPhase(
     const auto v_w_p = unmanaged( wv.v_w_p );
     const auto S_p = unmanaged( wv.S_p );
     const auto n_p = unmanaged( wv.n_p );
-    const UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> no_du;
+    const auto k_rel_p = unmanaged( wv.k_rel_p );
+    const auto material_p = unmanaged( pv.material_p );
 
     Kokkos::parallel_for(
         "mpm::g2p_velocity_remap_two_phase",
@@ -177,11 +213,20 @@ void g2pVelocityRemapTwoPhase(
             int ci, cj;
             double w[4], dwdx[4], dwdy[4];
             grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            g2pPoint( p, ci, cj, w, v_s_i, dv_s_i, flip_fraction, v_s_p, dt,
-                      du_p );
-            g2pPoint( p, ci, cj, w, v_w_i, dv_w_i, flip_fraction, v_w_p, dt,
-                      no_du );
-            const double m_w = n_p( p ) * S_p( p ) * water_density * vol_p( p );
+            double v_s_pic[2], dv_s[2], v_w_pic[2], dv_w[2];
+            interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_s_pic, dv_s );
+            interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_w_pic, dv_w );
+            const double memory = physics::seepageMemory(
+                dt, n_p( p ), S_p( p ), materials[material_p( p )].permeability,
+                k_rel_p( p ), water.viscosity, water.density, inertia_scaling );
+            for ( int d = 0; d < 2; ++d )
+            {
+                twoPhaseBlend( flip_fraction, relative_flip, memory,
+                               v_s_p( p, d ), dv_s[d], v_s_pic[d],
+                               v_w_p( p, d ), dv_w[d], v_w_pic[d] );
+                du_p( p, d ) = dt * v_s_pic[d];
+            }
+            const double m_w = n_p( p ) * S_p( p ) * water.density * vol_p( p );
             const auto node = sums.access();
             scatterPointMomentum( node, ci, cj, ny1, w, m_s_p( p ),
                                   v_s_p( p, 0 ), v_s_p( p, 1 ), 0 );

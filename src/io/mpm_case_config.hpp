@@ -256,6 +256,11 @@ struct SolverConfig
     //! a step of the CFL limit; smaller steps blend proportionally less PIC
     //! (Simulation::stepFlipFraction).
     double flip_fraction = 0.99;
+    //! Two-phase: the water takes the solid's FLIP/PIC update plus its
+    //! seepage velocity, damped as the drag damps it (mpm::twoPhaseBlend).
+    //! Off by default: it lets a wetting column's solid ring
+    //! (docs/case-file.md).
+    bool water_relative_flip = false;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;
     /*!
@@ -266,6 +271,9 @@ struct SolverConfig
     //! Two-phase: the points of a cell share one p_w that holds their
     //! water (physics::CellWaterEquilibrium).
     bool cell_equilibrium = true;
+    //! ... with a pressure varying linearly across the cell, its slope
+    //! limited from the neighbours' (physics::limitedPressureSlope).
+    bool cell_pressure_slope = true;
     //! Remove points that leave the grid (counted) instead of stopping.
     bool remove_points_leaving_grid = false;
     //! A speed above this factor times the largest wave speed is unstable.

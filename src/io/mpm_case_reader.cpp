@@ -299,6 +299,7 @@ class CaseParser
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
                        "base_cell_completion", "cell_equilibrium",
+                       "cell_pressure_slope", "water_relative_flip",
                        "remove_points_leaving_grid", "instability_speed_factor",
                        "inertia_scaling", "checkpoint_interval_s" },
                      "[solver]" );
@@ -315,8 +316,14 @@ class CaseParser
                                     "", Need::Optional )
                               .value_or( s.flip_fraction );
         s.bbar = r.boolean( "bbar", Need::Optional ).value_or( s.bbar );
+        s.water_relative_flip =
+            r.boolean( "water_relative_flip", Need::Optional )
+                .value_or( s.water_relative_flip );
         s.cell_equilibrium = r.boolean( "cell_equilibrium", Need::Optional )
                                  .value_or( s.cell_equilibrium );
+        s.cell_pressure_slope =
+            r.boolean( "cell_pressure_slope", Need::Optional )
+                .value_or( s.cell_pressure_slope );
         s.base_cell_completion =
             r.boolean( "base_cell_completion", Need::Optional )
                 .value_or( s.base_cell_completion );

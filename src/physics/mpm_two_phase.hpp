@@ -100,6 +100,32 @@ KOKKOS_INLINE_FUNCTION double nodalDrag( const double nS,
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Decay over a step of the part of a point's seepage velocity
+  w = v_w - v_s that the grid does not carry: exp(-dt / tau), the drag's
+  relaxation time of Eq. 9 at the point, tau = f rho_w k k_rel / (n S mu)
+  (the water's inertial mass f n S rho_w V, f the inertia scaling, over the
+  drag (n S)^2 mu V / (k k_rel); the solid's share of the relaxation is
+  left out). 0 without permeability:
+  the water then moves as the grid's (and with the solid where locked).
+  Saturated slope soil: tau = 15 ms, 1 - exp(-dt / tau) = 2 % of a
+  3e-4 s step.
+*/
+KOKKOS_INLINE_FUNCTION double
+seepageMemory( const double dt, const double n, const double S,
+               const double permeability, const double k_rel,
+               const double viscosity, const double density,
+               const double inertia_scaling )
+{
+    namespace KE = Kokkos::Experimental;
+    const double mobility = permeability * k_rel;
+    if ( !( mobility > 0.0 ) )
+        return 0.0;
+    return KE::exp( -dt * n * S * viscosity /
+                    ( inertia_scaling * density * mobility ) );
+}
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Newton iteration of the mass-conservative pore-pressure increment
   of one point (Eq. 8, formulation.md step 6): solves for dp
     n (S(p + dp) - S(p)) + n S dp / K_w = -dt (n S div v_w + (1 - n) S div v_s)
@@ -229,10 +255,13 @@ porePressureIncrement( const RetentionFunction& retention, const double p_w,
 /*!
   \brief Water equilibrium inside a cell (a stabilised Eq. 8): after the
   point-wise mass balance of a step, the points of a cell (those without a
-  prescribed p_w) take one pressure P, the one that holds their water:
-    sum_i a_i (S_i(P) - S_i) + sum_i a_i S_i (P - p_i) / K_w = 0,
+  prescribed p_w) take the pressure P + d_i of one profile across the
+  cell (d_i = s . (x_i - x_c), the cell's limited slope s: 0 for a uniform
+  pressure; limitedPressureSlope), its level P the one that holds their
+  water:
+    sum_i a_i (S_i(P + d_i) - S_i) + sum_i a_i S_i (P + d_i - p_i) / K_w = 0,
   a_i = V_i n_i, solved by a safeguarded Newton iteration (the left side
-  grows with P; P lies between the points' smallest and largest p_w).
+  grows with P; P lies between the smallest and largest p_i - d_i).
 
   The nodal forces cannot see a pressure that alternates from point to
   point inside a cell (the hourglass mode of four points on a bilinear
@@ -257,11 +286,12 @@ struct CellWaterEquilibrium
         double a;   //!< V n, m^3
         double S;   //!< saturation before
         double p_w; //!< pressure before, Pa
+        double d;   //!< its pressure relative to the cell's level P, Pa
         const RetentionParams* retention;
     };
 
-    //! The common pressure P of the `count` points point(0..count);
-    //! `changed` is false if they already share one (P is then theirs).
+    //! The level P of the `count` points point(0..count) (point i takes
+    //! P + d_i); `changed` is false if they already lie on the profile.
     template <class PointAt>
     KOKKOS_INLINE_FUNCTION double solve( const int count, const PointAt& point,
                                          bool& changed ) const
@@ -271,9 +301,10 @@ struct CellWaterEquilibrium
         for ( int i = 0; i < count; ++i )
         {
             const Point q = point( i );
-            lo = q.p_w < lo ? q.p_w : lo;
-            hi = q.p_w > hi ? q.p_w : hi;
-            weighted += q.a * q.S * q.p_w;
+            const double level = q.p_w - q.d;
+            lo = level < lo ? level : lo;
+            hi = level > hi ? level : hi;
+            weighted += q.a * q.S * level;
             weight += q.a * q.S;
         }
         changed = hi - lo > 1.0e-9 * ( KE::fabs( hi ) + 1.0 );
@@ -288,9 +319,9 @@ struct CellWaterEquilibrium
             {
                 const Point q = point( i );
                 const SaturationState state =
-                    Retention{}.saturationState( *q.retention, P );
+                    Retention{}.saturationState( *q.retention, P + q.d );
                 g += q.a * ( state.S - q.S ) +
-                     q.a * q.S * ( P - q.p_w ) / bulk_modulus;
+                     q.a * q.S * ( P + q.d - q.p_w ) / bulk_modulus;
                 slope += q.a * ( state.dS_dp + q.S / bulk_modulus );
             }
             if ( g > 0.0 )

@@ -334,7 +334,8 @@ class Simulation
                             solver.inertia_scaling, base );
         g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
                                   water_grid, dt, stepFlipFraction( dt ),
-                                  water.density, _two_phase_momentum );
+                                  solver.water_relative_flip, materials, water,
+                                  solver.inertia_scaling, _two_phase_momentum );
         remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum );
         baseCellRates( exec, _base_cells, grid, water_grid, water.density );
         if ( solver.bbar )
@@ -351,7 +352,7 @@ class Simulation
         if ( solver.cell_equilibrium )
             cellWaterEquilibrium( exec, particles, water_particles,
                                   grid.geometry, materials, water, saturated,
-                                  _cell_lists );
+                                  solver.cell_pressure_slope, _cell_lists );
         // S_p and dS_dp_p now hold the retention law at p_w_p.
         _retention_current = !saturated;
         return report;

@@ -128,7 +128,7 @@ mpm::CaseConfig footingCase( const bool bbar, const bool cell_equilibrium )
 TYPED_TEST( BBar, reduces_pore_pressure_checkerboard )
 {
     // Point-wise p_w (no stabilisation), B-bar, the cell water equilibrium
-    // (the default, physics::CellWaterEquilibrium).
+    // (the default, physics::CellWaterEquilibrium, with its pressure slope).
     const bool bbar[3] = { false, true, false };
     const bool equilibrium[3] = { false, false, true };
     double metric[3], intra[3];
@@ -147,12 +147,13 @@ TYPED_TEST( BBar, reduces_pore_pressure_checkerboard )
                  "equilibrium)\n",
                  metric[0], metric[1], metric[2], intra[0], intra[1],
                  intra[2] );
-    // Point-wise, the points of a cell oscillate by as much as p_w itself;
-    // with B-bar they share the cell's volumetric rates and p_w, with the
-    // cell equilibrium its water.
+    // Point-wise, the points of a cell differ by as much as p_w itself;
+    // with B-bar they share the cell's volumetric
+    // rates and p_w; the cell equilibrium leaves the profile of the slope
+    // its neighbours give (3.5 % of the point-wise spread).
     EXPECT_GT( intra[0], 0.2 );
     EXPECT_LT( intra[1], 0.01 * intra[0] );
-    EXPECT_LT( intra[2], 0.01 * intra[0] );
+    EXPECT_LT( intra[2], 0.1 * intra[0] );
     // Between cells the field is smooth (the metric is the curvature of
     // the footing's pressure bulb).
     EXPECT_LT( metric[1], 0.05 );

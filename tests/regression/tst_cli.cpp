@@ -257,7 +257,9 @@ snapshot_interval_s = 0.1
     ASSERT_TRUE( metrics.contains( "pore_pressure_max_pa" ) );
     const double p_max = metrics["pore_pressure_max_pa"];
     const double p99 = metrics["pore_pressure_p99_pa"];
-    EXPECT_NEAR( p_max, 9810.0 * 1.75, 0.01 * p_max );
+    // The lowest points, 1.875 m deep (the cell's pressure slope gives each
+    // point its own depth's pressure; one p_w per cell gave 1.75 m).
+    EXPECT_NEAR( p_max, 9810.0 * 1.875, 0.02 * p_max );
     EXPECT_LE( p99, p_max );
     EXPECT_GT( p99, 0.8 * p_max );
 }

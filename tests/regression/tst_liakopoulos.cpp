@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -73,37 +75,43 @@ class StageProbe : public mpm::RunObserver
 };
 
 //---------------------------------------------------------------------------//
-// The paper's set-up (10 cells, 2 x 2 points) over the first 20 minutes
-// against OpenGeoSys: cell-mean p_w within 2.5 % of the top suction,
-// bottom outflow within 3 %, top settlement within 8 %.
-TYPED_TEST( Liakopoulos, drainage_matches_reference_for_20_minutes )
+// The paper's set-up (10 cells, 2 x 2 points) against OpenGeoSys at every
+// reference time (2 ... 120 min): every point's p_w within 3 % of the top
+// suction and every cell mean within 2.5 % (achieved: points <= 2.45 %,
+// cells <= 1.9 %; a uniform p_w per cell gave points 4.3-7.7 %), over the
+// first 20 minutes the bottom outflow within 3 % and the top settlement
+// within 8 %.
+TYPED_TEST( Liakopoulos, drainage_matches_reference_point_by_point )
 {
     auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/liakopoulos.toml" );
-    config.stages[1].duration_s = 1200.0;
+    const auto profiles = readProfiles();
+    config.stages[1].duration_s = 60.0 * profiles.rbegin()->first + 1.0;
     config.stages[1].snapshot_interval_s = 0.0;
-    config.stages[1].snapshot_times_s = { 300.0, 600.0 };
+    config.stages[1].snapshot_times_s.clear();
+    for ( const auto& profile : profiles )
+        config.stages[1].snapshot_times_s.push_back( 60.0 * profile.first );
     mpm::Simulation<TypeParam> sim( config );
     StageProbe<TypeParam> probe( sim );
     mpm::runStages( sim, config, probe );
 
-    const auto profiles = readProfiles();
     const std::map<int, double> outflow_ref = {
         { 5, 3.394918e-06 }, { 10, 2.753338e-06 }, { 20, 2.035486e-06 } };
     const std::map<int, double> settlement_ref = {
         { 5, 0.541e-3 }, { 10, 0.760e-3 }, { 20, 1.004e-3 } };
     const double h = config.grid.cell_size_m;
-    for ( const int t : { 5, 10, 20 } )
+    for ( const auto& [t, ref] : profiles )
     {
         ASSERT_TRUE( probe.snapshots.count( t ) ) << t << " min";
         const auto& snap = probe.snapshots.at( t );
-        const auto& ref = profiles.at( t );
         const double top_suction = std::abs( ref.back().second );
         std::map<int, std::array<double, 3>> cells; // sum p, sum y0, count
-        double outflow = 0.0, settlement = 0.0;
+        double outflow = 0.0, settlement = 0.0, point_error = 0.0;
         int bottom = 0, top = 0;
         for ( int p = 0; p < snap.num_points; ++p )
         {
             const double y0 = snap.x[2 * p + 1] - snap.displacement[2 * p + 1];
+            point_error = std::max(
+                point_error, std::abs( snap.p_w[p] - interpolate( ref, y0 ) ) );
             auto& c = cells[static_cast<int>( y0 / h )];
             c[0] += snap.p_w[p];
             c[1] += y0;
@@ -120,13 +128,18 @@ TYPED_TEST( Liakopoulos, drainage_matches_reference_for_20_minutes )
                 ++top;
             }
         }
+        double cell_error = 0.0;
         for ( const auto& [cell, c] : cells )
-        {
-            const double error =
-                std::abs( c[0] / c[2] - interpolate( ref, c[1] / c[2] ) );
-            EXPECT_LT( error, 0.025 * top_suction )
-                << t << " min, cell " << cell << ": p_w " << c[0] / c[2];
-        }
+            cell_error = std::max(
+                cell_error,
+                std::abs( c[0] / c[2] - interpolate( ref, c[1] / c[2] ) ) );
+        std::printf( "Liakopoulos %3d min: largest |p_w - reference| / top "
+                     "suction: points %.4f, cell means %.4f\n",
+                     t, point_error / top_suction, cell_error / top_suction );
+        EXPECT_LT( point_error, 0.03 * top_suction ) << t << " min";
+        EXPECT_LT( cell_error, 0.025 * top_suction ) << t << " min";
+        if ( !outflow_ref.count( t ) )
+            continue;
         EXPECT_NEAR( outflow / bottom, outflow_ref.at( t ),
                      0.03 * outflow_ref.at( t ) )
             << t << " min";

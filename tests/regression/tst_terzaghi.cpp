@@ -68,10 +68,11 @@ TYPED_TEST( Terzaghi, isochrones_match_series_solution )
         std::printf( "Terzaghi %d cells, Tv = %.2f: relative L2 error %.4f "
                      "(cells), %.4f (points)\n",
                      cells, Tv[k], error.cell, error.point );
-        // Cell means are second-order accurate; point values carry the
-        // O(h) variation inside a cell on top.
-        EXPECT_LT( error.cell, 0.02 ) << "Tv = " << Tv[k];
-        EXPECT_LT( error.point, 0.025 ) << "Tv = " << Tv[k];
+        // Achieved: cells 0.08-0.11 %, points 0.11-0.13 % (the cell's
+        // pressure slope, solver.cell_pressure_slope; a uniform pressure per
+        // cell gave points 2.3-2.4 %).
+        EXPECT_LT( error.cell, 0.003 ) << "Tv = " << Tv[k];
+        EXPECT_LT( error.point, 0.004 ) << "Tv = " << Tv[k];
     }
     // Degree of consolidation from the mean pore pressure.
     const auto& last = probe.snapshots.back();
