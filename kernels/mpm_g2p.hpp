@@ -216,9 +216,14 @@ void g2pVelocityRemapTwoPhase(
             double v_s_pic[2], dv_s[2], v_w_pic[2], dv_w[2];
             interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_s_pic, dv_s );
             interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_w_pic, dv_w );
-            const double memory = physics::seepageMemory(
-                dt, n_p( p ), S_p( p ), materials[material_p( p )].permeability,
-                k_rel_p( p ), water.viscosity, water.density, inertia_scaling );
+            // Only the relative blend uses it (an exp per point).
+            const double memory =
+                relative_flip
+                    ? physics::seepageMemory(
+                          dt, n_p( p ), S_p( p ),
+                          materials[material_p( p )].permeability, k_rel_p( p ),
+                          water.viscosity, water.density, inertia_scaling )
+                    : 0.0;
             for ( int d = 0; d < 2; ++d )
             {
                 twoPhaseBlend( flip_fraction, relative_flip, memory,
