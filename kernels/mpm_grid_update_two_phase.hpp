@@ -21,21 +21,23 @@ namespace mpm
   and the WaterGridViews fields), then, on the nodes with solid mass, the
   new solid and water velocities with the drag implicit
   (TwoPhaseNodalUpdate), the solid's boundary flags and the water's
-  impermeability ties. The water force (per unit water volume) is scaled
+  impermeability ties; a component with a prescribed inward flux (flux_i,
+  an inflow on a grid edge) is tied with that flux's seepage
+  (physics::tiedSeepage). The water force (per unit water volume) is scaled
   by the nodal n S = m_w / (rho_w vol); the drag comes from the nodal mean
   permeability (physics::nodalDrag). Nodes of base cells get the forces
   that complete those cells (BaseCellAccess::addNodeForces).
 */
 template <class ExecSpace, class Duplication>
-void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
-                         WaterGridViews<ExecSpace>& wg,
-                         const GridScatter<ExecSpace, TwoPhaseNodeField::count,
-                                           Duplication>& scatter,
-                         const double dt, const double damping,
-                         const double water_density,
-                         const double water_viscosity,
-                         const double inertia_scaling,
-                         const BaseCellAccess<ExecSpace>& base )
+void gridUpdateTwoPhase(
+    const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
+    WaterGridViews<ExecSpace>& wg,
+    const GridScatter<ExecSpace, TwoPhaseNodeField::count, Duplication>&
+        scatter,
+    const double dt, const double damping, const double water_density,
+    const double water_viscosity, const double inertia_scaling,
+    const BaseCellAccess<ExecSpace>& base,
+    const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i )
 {
     const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
@@ -57,6 +59,7 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
     const auto dv_w_i = unmanaged( wg.dv_w_i );
     const auto flags_w_i = unmanaged( wg.flags_w_i );
     const auto active_i = unmanaged( gv.active_i );
+    const auto flux_i = unmanaged( inflow_flux_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -106,9 +109,12 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r =
-                    update( m_s, m_w, mv_s[d], mv_w[d], f_m[d], nS * f_w[d],
-                            drag, flags & bit, locked || ( flags_w & bit ) );
+                const double flux = flux_i( i, j, d );
+                const auto r = update(
+                    m_s, m_w, mv_s[d], mv_w[d], f_m[d], nS * f_w[d], drag,
+                    flags & bit, locked || ( flags_w & bit ) || flux != 0.0,
+                    physics::tiedSeepage( flux, m_w, m_s, vol,
+                                          water_density ) );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;
@@ -122,13 +128,15 @@ void gridUpdateTwoPhase( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
   \brief MUSL on the nodes of gv.active_i: takes the remapped momenta of
   both phases into gv.p_i and wg.mv_w_i and, where there is solid mass,
   the nodal velocities, with the solid's flags and the water ties
-  (v_w = v_s on tied components).
+  (v_w = v_s + the seepage of a prescribed flux on tied components).
 */
 template <class ExecSpace, class Duplication>
 void remapVelocityTwoPhase(
     const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
     WaterGridViews<ExecSpace>& wg,
-    const GridScatter<ExecSpace, 4, Duplication>& scatter )
+    const GridScatter<ExecSpace, 4, Duplication>& scatter,
+    const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i,
+    const double water_density )
 {
     const auto sums = scatter.handle();
     const auto m_s_i = unmanaged( gv.m_i );
@@ -139,7 +147,9 @@ void remapVelocityTwoPhase(
     const auto mv_w_i = unmanaged( wg.mv_w_i );
     const auto v_w_i = unmanaged( wg.v_w_i );
     const auto flags_w_i = unmanaged( wg.flags_w_i );
+    const auto vol_i = unmanaged( wg.vol_i );
     const auto active_i = unmanaged( gv.active_i );
+    const auto flux_i = unmanaged( inflow_flux_i );
     const int ny1 = gv.geometry.ny + 1;
 
     Kokkos::parallel_for(
@@ -159,14 +169,20 @@ void remapVelocityTwoPhase(
             double v_s[2] = { mv_s_i( i, j, 0 ) / m_s_i( i, j ),
                               mv_s_i( i, j, 1 ) / m_s_i( i, j ) };
             physics::applyVelocityBC( flags_i( i, j ), v_s[0], v_s[1] );
-            const bool has_water = m_w_i( i, j ) > 1.0e-12 * m_s_i( i, j );
+            const double m_s = m_s_i( i, j ), m_w = m_w_i( i, j );
+            const bool has_water = m_w > 1.0e-12 * m_s;
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
+                const double flux = flux_i( i, j, d );
+                const bool tied = ( flags_w_i( i, j ) & bit ) || flux != 0.0;
                 v_s_i( i, j, d ) = v_s[d];
-                v_w_i( i, j, d ) = ( has_water && !( flags_w_i( i, j ) & bit ) )
-                                       ? mv_w_i( i, j, d ) / m_w_i( i, j )
-                                       : v_s[d];
+                v_w_i( i, j, d ) =
+                    !has_water ? v_s[d]
+                    : tied     ? v_s[d] + physics::tiedSeepage( flux, m_w, m_s,
+                                                                vol_i( i, j ),
+                                                                water_density )
+                               : mv_w_i( i, j, d ) / m_w;
             }
         } );
 }

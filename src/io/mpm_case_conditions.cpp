@@ -61,8 +61,9 @@ std::optional<std::array<Point2, 2>> readBox( TableReader& r )
 PointSelection readSelection( TableReader& r )
 {
     PointSelection selection;
-    const auto where =
-        r.choice( "where", { "box", "surface_cells" }, Need::Required );
+    const auto where = r.choice(
+        "where", { "box", "surface_cells", "top", "bottom", "left", "right" },
+        Need::Required );
     if ( where )
         selection.kind = static_cast<PointSelection::Kind>( *where );
     if ( where && selection.kind == PointSelection::Kind::Box )
@@ -308,6 +309,13 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                                "not allowed with follow_surface_s: the "
                                "length is the surface's current horizontal "
                                "projection" );
+        }
+        else if ( inflow.onGridEdge() )
+        {
+            if ( const toml::node* length = r.find( "length_m" ) )
+                diag.keyError( *length, r.keyPath( "length_m" ),
+                               "not allowed on a grid edge: the flux acts "
+                               "on the edge's nodes that touch soil" );
         }
         else
             inflow.length_m =

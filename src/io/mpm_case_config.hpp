@@ -92,19 +92,27 @@ struct PointSelection
 {
     enum class Kind
     {
-        Box,         //!< points inside box_m = [[x0, y0], [x1, y1]]
-        SurfaceCells //!< points initially in cells below an empty cell
+        Box,          //!< points inside box_m = [[x0, y0], [x1, y1]]
+        SurfaceCells, //!< points initially in cells below an empty cell
+        TopCells,     //!< points in the cells along the grid's top edge
+        BottomCells,  //!< ... its bottom edge
+        LeftCells,    //!< ... its left edge
+        RightCells    //!< ... its right edge
     };
     Kind kind = Kind::Box;
     std::array<Point2, 2> box_m = { Point2{ 0.0, 0.0 }, Point2{ 0.0, 0.0 } };
 };
 
 /*!
-  Prescribed water inflow (rainfall of intensity flux_m_per_s on a surface
-  of length length_m, times f(t)): the water volume flux * length * dt of a
-  step is added to the selected points in proportion to their volume (a
-  mass-conservative source in Eq. 8). With ponding, a selected point that
-  saturates keeps p_w <= 0 (the excess runs off).
+  Prescribed water inflow (rainfall of intensity flux_m_per_s, times f(t)).
+  On points (box, surface_cells; a surface of length length_m): the water
+  volume flux * length * dt of a step is added to the selected points in
+  proportion to their volume (a mass-conservative source in Eq. 8). On a
+  grid edge (top, bottom, left, right): a flux boundary of the water, the
+  edge nodes' water moving into the soil relative to the solid at
+  flux / (n S) (an impermeable edge with a prescribed seepage; the length
+  is the edge's). With ponding, a selected point (on an edge: a point of
+  the edge's cells) that saturates keeps p_w <= 0 (the excess runs off).
 */
 struct WaterInflow
 {
@@ -117,6 +125,13 @@ struct WaterInflow
     //! every this many seconds, and length_m is the surface's current
     //! horizontal projection (rain falls vertically); 0: fixed selection.
     double follow_surface_interval_s = 0.0;
+
+    //! True for a flux boundary on a grid edge (no point source).
+    bool onGridEdge() const
+    {
+        return points.kind != PointSelection::Kind::Box &&
+               points.kind != PointSelection::Kind::SurfaceCells;
+    }
 };
 
 //! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t).

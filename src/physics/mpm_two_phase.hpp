@@ -19,7 +19,8 @@ namespace physics
     -Q v_w'          + (m_s/dt + Q) v_s' = m_s/dt v_s + F_m - F_w
   with the drag coefficient Q (kg/s) at the new time, so no permeability
   limits the step. A fixed solid sets v_s' = 0; an impermeable boundary
-  ties v_w' = v_s'; the remaining scalar equation is then solved.
+  ties v_w' = v_s' + w_tied (w_tied = 0, or the seepage of a prescribed
+  flux: tiedSeepage); the remaining scalar equation is then solved.
   Local damping reduces the mixture force by damping |F_m| along v_s; the
   water force is not damped (the drag already dissipates, and damping it
   would slow consolidation).
@@ -44,7 +45,8 @@ struct TwoPhaseNodalUpdate
     KOKKOS_INLINE_FUNCTION Result
     operator()( const double m_s, const double m_w, const double mv_s,
                 const double mv_w, double f_m, double f_w, const double q,
-                const bool solid_fixed, const bool water_tied ) const
+                const bool solid_fixed, const bool water_tied,
+                const double w_tied = 0.0 ) const
     {
         namespace KE = Kokkos::Experimental;
         const double v_s = mv_s / m_s;
@@ -61,9 +63,16 @@ struct TwoPhaseNodalUpdate
         if ( solid_fixed )
         {
             r.v_s = 0.0;
-            r.v_w = ( water_tied || !has_water ) ? 0.0 : b_w / ( a_w + q );
+            r.v_w = !has_water ? 0.0 : water_tied ? w_tied : b_w / ( a_w + q );
         }
-        else if ( water_tied || !has_water || !( q < 1.0e300 ) )
+        else if ( water_tied && has_water )
+        {
+            // v_w' = v_s' + w_tied in the sum of both equations (the
+            // mixture: the drag cancels).
+            r.v_s = ( b_w + b_s - a_w * w_tied ) / ( a_w + a_s );
+            r.v_w = r.v_s + w_tied;
+        }
+        else if ( !has_water || !( q < 1.0e300 ) )
         {
             // v_w' = v_s': the sum of both equations (the mixture); also
             // the limit of an infinite drag (k_rel = 0 at every point).
@@ -81,6 +90,20 @@ struct TwoPhaseNodalUpdate
         return r;
     }
 };
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Water velocity relative to the solid, m/s, on a tied component of
+  a node where a flux boundary prescribes the inward Darcy flux q (m/s,
+  volume per area and time): q = n S (v_w - v_s) with the nodal
+  n S = m_w / (rho_w V). Zero without water (nothing to carry it).
+*/
+KOKKOS_INLINE_FUNCTION double tiedSeepage( const double q, const double m_w,
+                                           const double m_s, const double vol,
+                                           const double water_density )
+{
+    return m_w > 1.0e-12 * m_s ? q * water_density * vol / m_w : 0.0;
+}
 
 //---------------------------------------------------------------------------//
 /*!

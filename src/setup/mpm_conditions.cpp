@@ -28,6 +28,29 @@ double evaluateTimeFunction( const TimeFunction& function, const double t )
 }
 
 //---------------------------------------------------------------------------//
+namespace
+{
+// Whether cell (i, j) lies along the grid edge of an edge-cells selection.
+bool inEdgeCells( const PointSelection::Kind kind,
+                  const std::pair<int, int>& cell, const GridConfig& grid )
+{
+    switch ( kind )
+    {
+    case PointSelection::Kind::TopCells:
+        return cell.second >= grid.cells[1] - 1;
+    case PointSelection::Kind::BottomCells:
+        return cell.second <= 0;
+    case PointSelection::Kind::LeftCells:
+        return cell.first <= 0;
+    case PointSelection::Kind::RightCells:
+        return cell.first >= grid.cells[0] - 1;
+    default:
+        return false;
+    }
+}
+} // namespace
+
+//---------------------------------------------------------------------------//
 std::vector<bool> selectPoints( const PointSelection& selection,
                                 const std::vector<double>& x,
                                 const std::vector<int>& status,
@@ -60,11 +83,13 @@ std::vector<bool> selectPoints( const PointSelection& selection,
             picked[p] = x[2 * p] >= b[0][0] && x[2 * p] <= b[1][0] &&
                         x[2 * p + 1] >= b[0][1] && x[2 * p + 1] <= b[1][1];
         }
-        else
+        else if ( selection.kind == PointSelection::Kind::SurfaceCells )
         {
             const auto cell = cellOf( p );
             picked[p] = occupied.count( { cell.first, cell.second + 1 } ) == 0;
         }
+        else
+            picked[p] = inEdgeCells( selection.kind, cellOf( p ), grid );
     }
     return picked;
 }

@@ -13,7 +13,8 @@ double evaluateTimeFunction( const TimeFunction& function, double t );
 /*!
   \brief Which points a selection picks, from their positions x (2 per
   point) and status (only active points are picked). SurfaceCells picks the
-  points of every occupied cell whose upper neighbour cell holds no point.
+  points of every occupied cell whose upper neighbour cell holds no point;
+  the edge kinds the points of the cells along that grid edge.
 */
 std::vector<bool> selectPoints( const PointSelection& selection,
                                 const std::vector<double>& x,

@@ -331,12 +331,14 @@ class Simulation
                         settings.gravity_y, water.density );
         gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
                             settings.damping, water.density, water.viscosity,
-                            solver.inertia_scaling, base );
+                            solver.inertia_scaling, base,
+                            conditions.inflow_flux_i );
         g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
                                   water_grid, dt, stepFlipFraction( dt ),
                                   solver.water_relative_flip, materials, water,
                                   solver.inertia_scaling, _two_phase_momentum );
-        remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum );
+        remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum,
+                               conditions.inflow_flux_i, water.density );
         baseCellRates( exec, _base_cells, grid, water_grid, water.density );
         if ( solver.bbar )
             cellAverages( exec );

@@ -132,6 +132,10 @@ struct StageConditions
     Kokkos::View<double*, device_type> inflow_rate{ "inflow_rate", 0 };
     //! 1 if the inflow ponds (caps p_w at 0 on its points), else 0.
     Kokkos::View<int*, device_type> inflow_ponding{ "inflow_ponding", 0 };
+    //! Current inward water flux of the inflows on grid edges at each node
+    //! (i, j, direction), m/s (volume per area and time); zero elsewhere.
+    Kokkos::View<double***, device_type> inflow_flux_i{ "inflow_flux_i", 0, 0,
+                                                        0 };
     std::vector<WaterInflow> inflows;
     std::vector<double> inflow_volumes; //!< volume of the points fed, m^3/m
     //! Stage time of the next surface re-detection of the inflows that
@@ -206,6 +210,8 @@ struct StageConditions
             }
             Kokkos::deep_copy( wv.p_w_condition_p, condition_h );
             inflows = stage.inflows;
+            inflow_flux_i = Kokkos::View<double***, device_type>(
+                "inflow_flux_i", grid.cells[0] + 1, grid.cells[1] + 1, 2 );
             _particles = pv;
             _water_particles = wv;
             _grid = grid;
@@ -322,15 +328,60 @@ struct StageConditions
         auto rate_h = Kokkos::create_mirror_view( inflow_rate );
         for ( std::size_t f = 0; f < inflows.size(); ++f )
             rate_h( f ) =
-                inflow_volumes[f] > 0.0
+                inflow_volumes[f] > 0.0 && !inflows[f].onGridEdge()
                     ? inflows[f].flux_m_per_s * inflows[f].length_m *
                           evaluateTimeFunction( inflows[f].time_function, t ) /
                           inflow_volumes[f]
                     : 0.0;
         Kokkos::deep_copy( inflow_rate, rate_h );
+        updateEdgeFluxes( t );
     }
 
   private:
+    //! inflow_flux_i at stage time t: each edge inflow's flux along the
+    //! inward normal of its edge's nodes.
+    void updateEdgeFluxes( const double t )
+    {
+        bool any = false;
+        for ( const WaterInflow& inflow : inflows )
+            any = any || inflow.onGridEdge();
+        if ( !any )
+            return;
+        auto flux_h = Kokkos::create_mirror_view( inflow_flux_i );
+        // A plain fill: a host deep_copy of a value would start the host
+        // backend's threads on every step.
+        std::fill( flux_h.data(), flux_h.data() + flux_h.span(), 0.0 );
+        const int nx = _grid.cells[0], ny = _grid.cells[1];
+        for ( const WaterInflow& inflow : inflows )
+        {
+            if ( !inflow.onGridEdge() )
+                continue;
+            const double q = inflow.flux_m_per_s *
+                             evaluateTimeFunction( inflow.time_function, t );
+            using Kind = PointSelection::Kind;
+            const Kind kind = inflow.points.kind;
+            const bool vertical =
+                kind == Kind::LeftCells || kind == Kind::RightCells;
+            const int count = vertical ? ny + 1 : nx + 1;
+            for ( int k = 0; k < count; ++k )
+            {
+                const int i = kind == Kind::LeftCells    ? 0
+                              : kind == Kind::RightCells ? nx
+                                                         : k;
+                const int j = kind == Kind::BottomCells ? 0
+                              : kind == Kind::TopCells  ? ny
+                                                        : k;
+                // Inward: down from the top, up from the bottom, ...
+                const double sign =
+                    ( kind == Kind::TopCells || kind == Kind::RightCells )
+                        ? -1.0
+                        : 1.0;
+                flux_h( i, j, vertical ? 0 : 1 ) += sign * q;
+            }
+        }
+        Kokkos::deep_copy( inflow_flux_i, flux_h );
+    }
+
     // Handles of the points the inflows follow (shallow copies).
     ParticleViews<ExecSpace> _particles;
     WaterParticleViews<ExecSpace> _water_particles;

@@ -41,7 +41,7 @@ constexpr double rain = 0.9;                      // q_B / K_s
   exact surface stays unsaturated). `solver` is the [solver] table.
 */
 std::string column( const int cells, const double duration,
-                    const std::string& solver )
+                    const std::string& solver, const bool edge_flux )
 {
     const double h = height / cells;
     char grid[256], body[512], rain_table[256];
@@ -55,10 +55,16 @@ std::string column( const int cells, const double duration,
                    "[0.0, %.17g]]\ninitial_pore_pressure_pa = 0.0\n"
                    "initial_pore_pressure_gradient_pa_per_m = %.17g\n",
                    h, h, height, height, -rho_w_g );
-    std::snprintf( rain_table, sizeof rain_table,
-                   "[[stages.inflows]]\nwhere = \"surface_cells\"\n"
-                   "flux_m_per_s = %.17g\nlength_m = %.17g\n",
-                   rain * K_s, h );
+    if ( edge_flux )
+        std::snprintf( rain_table, sizeof rain_table,
+                       "[[stages.inflows]]\nwhere = \"top\"\n"
+                       "flux_m_per_s = %.17g\n",
+                       rain * K_s );
+    else
+        std::snprintf( rain_table, sizeof rain_table,
+                       "[[stages.inflows]]\nwhere = \"surface_cells\"\n"
+                       "flux_m_per_s = %.17g\nlength_m = %.17g\n",
+                       rain * K_s, h );
     return std::string( "[case]\nname = \"gardner_column\"\n"
                         "analysis = \"unsaturated\"\n" ) +
            grid + R"(
@@ -168,36 +174,47 @@ conductivityError( const mpm::HostSnapshot& snap, const double t_star,
     return e;
 }
 
-//! The largest errors over the probe times, printed per time.
+//! The errors at the probe times 0.5, 1, 2 and 4 s of rain, printed.
 template <class ExecSpace>
-ConductivityError largestError( const int cells, const std::string& solver )
+std::vector<ConductivityError> errorHistory( const int cells,
+                                             const std::string& solver,
+                                             const bool edge_flux = true )
 {
     const std::vector<double> times = { 0.5, 1.0, 2.0, 4.0 };
     const auto config = mpm::parseCase(
-        column( cells, times.back() + 1.0e-3, solver ), "gardner_column" );
+        column( cells, times.back() + 1.0e-3, solver, edge_flux ),
+        "gardner_column" );
     mpm::Simulation<ExecSpace> sim( config );
     RainProbe<ExecSpace> probe( sim, times );
     mpm::runStages( sim, config, probe );
     EXPECT_EQ( probe.snapshots.size(), times.size() );
     const mpm_test::GardnerInfiltration exact( alpha, height, 0.0, rain );
-    ConductivityError largest;
+    std::vector<ConductivityError> errors;
     for ( std::size_t k = 0; k < probe.snapshots.size(); ++k )
     {
         const double t_star =
             exact.tStar( probe.stage_times[k], K_s, porosity );
-        const ConductivityError e =
-            conductivityError( probe.snapshots[k], t_star, cells, exact );
-        std::printf( "Gardner infiltration, %d cells, %s t = %.2f s (t* = "
-                     "%.2f): |K/K_s - exact| points %.4f, cells %.4f, top "
-                     "cell %.4f, below it %.4f\n",
-                     cells, solver.empty() ? "default," : "relative seepage,",
+        errors.push_back(
+            conductivityError( probe.snapshots[k], t_star, cells, exact ) );
+        const ConductivityError& e = errors.back();
+        std::printf( "Gardner infiltration, %d cells, %s, %s t = %.2f s "
+                     "(t* = %.2f): |K/K_s - exact| points %.4f, cells %.4f, "
+                     "top cell %.4f, below it %.4f\n",
+                     cells, edge_flux ? "edge flux" : "point source",
+                     solver.empty() ? "default," : "relative seepage,",
                      probe.stage_times[k], t_star, e.point, e.cell, e.top_cell,
                      e.below_top );
-        largest.point = std::max( largest.point, e.point );
-        largest.cell = std::max( largest.cell, e.cell );
-        largest.top_cell = std::max( largest.top_cell, e.top_cell );
-        largest.below_top = std::max( largest.below_top, e.below_top );
     }
+    return errors;
+}
+
+//! The largest point error of a history from its entry `first` on.
+double largestPointError( const std::vector<ConductivityError>& errors,
+                          const std::size_t first = 0 )
+{
+    double largest = 0.0;
+    for ( std::size_t k = first; k < errors.size(); ++k )
+        largest = std::max( largest, errors[k].point );
     return largest;
 }
 
@@ -221,24 +238,30 @@ TEST( GardnerInfiltrationSolution, meets_its_initial_and_boundary_conditions )
                  rain + ( 1.0 - rain ) * std::exp( -alpha * 0.5 ), 1.0e-9 );
 }
 
-// The default transfer (the water's own FLIP/PIC blend) damps the seepage:
-// the rain ponds in the top cell (K/K_s 1 against 0.43-0.69), 0.62 off the
-// exact solution, 0.59 below it (printed, not checked). With the seepage
-// damped only as the drag damps it (solver.water_relative_flip) every
-// point below the top cell is within 0.024 at 20 cells and 0.014 at 40,
-// the top cell within 0.094 and 0.046: first order, from the rain entering
-// as a source in the top cell's points under an impermeable top node row.
-// The issue's 0.02 in the top cell is not met yet.
+// The rain enters through the top edge (a flux boundary of the water:
+// the top nodes' seepage q / (n S)). As a source in the top cell's points
+// under an impermeable top node row it ponds in the top cell with the
+// default transfer (0.57 off the exact solution at 0.5 s, 0.21 at 4 s;
+// printed). With the flux boundary the default transfer is within 0.045
+// at 0.5 s (the PIC share of the water's blend damps the seepage while the
+// front accelerates) and within 0.019 from 1 s on; with the seepage damped
+// only as the drag damps it (solver.water_relative_flip) within 0.0045 at
+// 20 cells and 0.0032 at 40.
 TYPED_TEST( GardnerInfiltration, conductivity_matches_exact_solution )
 {
-    largestError<TypeParam>( 20, "" );
+    errorHistory<TypeParam>( 20, "", false );
+    const auto coarse = errorHistory<TypeParam>( 20, "" );
+    const auto fine = errorHistory<TypeParam>( 40, "" );
+    EXPECT_LT( largestPointError( coarse ), 0.13 );
+    EXPECT_LT( largestPointError( coarse, 1 ), 0.06 );
+    EXPECT_LT( largestPointError( fine ), 0.7 * largestPointError( coarse ) );
+
     const std::string relative = "water_relative_flip = true\n";
-    const ConductivityError coarse = largestError<TypeParam>( 20, relative );
-    const ConductivityError fine = largestError<TypeParam>( 40, relative );
-    EXPECT_LT( coarse.below_top, 0.05 );
-    EXPECT_LT( coarse.top_cell, 0.15 );
-    EXPECT_LT( fine.below_top, 0.75 * coarse.below_top );
-    EXPECT_LT( fine.top_cell, 0.6 * coarse.top_cell );
+    const auto coarse_relative = errorHistory<TypeParam>( 20, relative );
+    const auto fine_relative = errorHistory<TypeParam>( 40, relative );
+    EXPECT_LT( largestPointError( coarse_relative ), 0.015 );
+    EXPECT_LT( largestPointError( fine_relative ),
+               largestPointError( coarse_relative ) );
 }
 
 } // namespace
