@@ -1,6 +1,7 @@
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <io/mpm_hdf5.hpp>
+#include <io/mpm_safe_file.hpp>
 #include <mpm_config.hpp>
 
 #include <hdf5.h>
@@ -290,8 +291,10 @@ void syncToDisk( const std::string& path, const int flags )
 void writeFile( const std::string& path, const Checkpoint& c )
 {
     Hdf5Ops h5( who, path );
+    // Exclusive: a symlink planted at path is removed, never followed.
+    removeStale( path );
     const hid_t file = h5.open(
-        H5Fcreate( path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT ),
+        H5Fcreate( path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT ),
         "H5Fcreate", H5Fclose, "/" );
     const CheckpointIdentity& id = c.identity;
     const std::vector<std::pair<const char*, AttributeValue>> attributes = {

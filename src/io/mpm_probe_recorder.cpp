@@ -1,7 +1,10 @@
 #include <io/mpm_probe_recorder.hpp>
+#include <io/mpm_safe_file.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <stdexcept>
@@ -78,12 +81,26 @@ void ProbeRecorder::open( const double resume_time_s )
             earlier.open( partial );
         std::string line;
         std::getline( earlier, line ); // header
-        while ( std::getline( earlier, line ) )
-            if ( std::stod( line.substr( 0, line.find( ',' ) ) ) <=
-                 resume_time_s * ( 1.0 + 1.0e-12 ) )
+        for ( long row = 2; std::getline( earlier, line ); ++row )
+        {
+            const std::string time = line.substr( 0, line.find( ',' ) );
+            char* end = nullptr;
+            const double t = std::strtod( time.c_str(), &end );
+            if ( time.empty() || *end != '\0' || !std::isfinite( t ) )
+                throw std::runtime_error(
+                    "cannot continue '" + _path + "': line " +
+                    std::to_string( row ) +
+                    ": expected the time in s as the first column, found '" +
+                    time.substr( 0, 40 ) + "'" );
+            if ( t <= resume_time_s * ( 1.0 + 1.0e-12 ) )
                 kept.push_back( line );
+        }
     }
     std::remove( _path.c_str() );
+    std::error_code ec; // a failure shows when the file is opened
+    std::filesystem::create_directories(
+        std::filesystem::path( _path ).parent_path(), ec );
+    removeStale( partial ); // a planted symlink is not followed
     _out.open( partial, std::ios::trunc );
     if ( !_out )
         throw std::runtime_error( "cannot write " + partial );
