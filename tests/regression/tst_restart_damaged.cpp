@@ -124,6 +124,51 @@ TEST( RestartDamaged, out_of_range_values_are_refused )
         "snapshot_count: expected >= 0, found -3" );
 }
 
+TEST( RestartDamaged, flipped_byte_in_a_dataset_is_refused )
+{
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / "rainslide_damaged_flip";
+    const fs::path file = stoppedRun( dir );
+    const fs::path checkpoint = dir / "out" / "checkpoint.h5";
+    // Where the positions' data lie in the file.
+    haddr_t address = 0;
+    {
+        const hid_t h5 =
+            H5Fopen( checkpoint.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
+        ASSERT_GE( h5, 0 );
+        const hid_t dset = H5Dopen2( h5, "/state/particles/x_p", H5P_DEFAULT );
+        ASSERT_GE( dset, 0 );
+        hsize_t offset[2];
+        unsigned filter_mask = 0;
+        hsize_t size = 0;
+        const hid_t space = H5Dget_space( dset );
+        const herr_t found = H5Dget_chunk_info( dset, space, 0, offset,
+                                                &filter_mask, &address, &size );
+        H5Sclose( space );
+        ASSERT_GE( found, 0 ) << "x_p is not chunked";
+        H5Dclose( dset );
+        H5Fclose( h5 );
+    }
+    {
+        std::fstream f( checkpoint,
+                        std::ios::in | std::ios::out | std::ios::binary );
+        f.seekg( static_cast<std::streamoff>( address + 100 ) );
+        char byte = 0;
+        f.read( &byte, 1 );
+        byte = static_cast<char>( byte ^ 0x10 );
+        f.seekp( static_cast<std::streamoff>( address + 100 ) );
+        f.write( &byte, 1 );
+    }
+    const auto result = runCommand( "run " + file.string() +
+                                    " --backend serial --quiet "
+                                    "--restart " +
+                                    checkpoint.string() );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    EXPECT_NE( result.output.find( "cannot read checkpoint" ),
+               std::string::npos )
+        << result.output;
+}
+
 TEST( RestartDamaged, malformed_probes_file_keeps_the_particles )
 {
     const fs::path dir =
