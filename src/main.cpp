@@ -29,8 +29,9 @@ namespace
 constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_interrupted = 130;
-//! Larger cases skip the point checks of `check` (the run still does them).
-constexpr double max_points_checked = 5.0e6;
+//! Cases whose points x polygon vertices exceed this skip the point checks
+//! of `check` (seconds of work; the run still does them).
+constexpr double max_point_tests = 5.0e8;
 
 int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
 {
@@ -169,7 +170,10 @@ int main( int argc, char* argv[] )
         return exit_bad_input;
     }
     // Errors that show only once the points exist (as a run makes them).
-    if ( estimate.points <= max_points_checked )
+    double vertices = 0.0;
+    for ( const mpm::BodyConfig& body : config.bodies )
+        vertices += static_cast<double>( body.polygon_m.size() );
+    if ( estimate.points * vertices <= max_point_tests )
     {
         const auto point_errors = mpm::pointRefusals( config );
         for ( const std::string& error : point_errors )

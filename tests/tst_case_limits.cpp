@@ -7,6 +7,7 @@
 
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -215,6 +216,22 @@ TEST( CaseLimits, case_file_must_be_a_regular_file )
     EXPECT_NE(
         errorsOfFile( big, seconds ).find( "found a file of 9437184 bytes" ),
         std::string::npos );
+}
+
+TEST( CaseLimits, unreadable_include_is_reported )
+{
+    if ( ::geteuid() == 0 )
+        GTEST_SKIP() << "root reads every file";
+    const fs::path dir = freshDir( "unreadable" );
+    writeFile( dir / "secret.toml", "[case]\nname = \"x\"\n" );
+    fs::permissions( dir / "secret.toml", fs::perms::none );
+    writeFile( dir / "case.toml",
+               "include = \"secret.toml\"\n" + std::string( small_case ) );
+    double seconds = 0.0;
+    EXPECT_NE( errorsOfFile( dir / "case.toml", seconds )
+                   .find( "found a file that cannot be opened (Permission "
+                          "denied)" ),
+               std::string::npos );
 }
 
 TEST( CaseLimits, include_of_a_fifo_does_not_block )
