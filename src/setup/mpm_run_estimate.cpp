@@ -157,6 +157,22 @@ std::vector<std::string> runRefusals( const CaseConfig& config,
              st.steps <= max_possible_steps )
             continue;
         cannot_finish = true;
+        const double time_steps =
+            st.dt_s > 0.0 ? std::ceil( duration / st.dt_s ) : st.steps;
+        if ( time_steps <= max_possible_steps && st.dt_s > 0.0 &&
+             duration + st.dt_s > duration )
+        {
+            // The snapshots (each shortens a step to land on it) are too many.
+            refusals.push_back(
+                "stages[" + std::to_string( k ) + "] '" + st.name +
+                "' cannot finish: expected at most " +
+                number( max_possible_steps ) + " steps, found " +
+                number( st.snapshots ) + " snapshots (duration_s = " +
+                number( duration ) + " s / snapshot_interval_s = " +
+                number( config.stages[k].snapshot_interval_s ) +
+                " s), each a step; raise snapshot_interval_s" );
+            continue;
+        }
         refusals.push_back(
             "stages[" + std::to_string( k ) + "] '" + st.name +
             "' cannot finish: expected a time step that ends duration_s = " +

@@ -103,6 +103,10 @@ TEST( CliSafety, long_run_and_snapshot_flood_exceed_the_budget )
     expectRefused( "duration",
                    blockCase( "", "snapshot_interval_s = 0.25", "1e12" ),
                    "cannot finish" );
+    expectRefused( "snapshot_flood",
+                   blockCase( "", "snapshot_interval_s = 1e-13", "5.0" ),
+                   "cannot finish: expected at most 1e+12 steps, found 5e+13 "
+                   "snapshots" );
     expectRefused( "snapshots", blockCase( "", "snapshot_interval_s = 1e-12" ),
                    "the run exceeds the budget: snapshots 2e+11 > 20000" );
     // The budget names its override, and the override works.
