@@ -28,9 +28,9 @@ struct StepDiagnostics
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Whether point p's position, stress, volume (two-phase: pore
-  pressure, water velocity) and speed^2 are finite and its volume is
-  positive.
+  \brief Whether point p's position, stress, strain, plastic shear strain,
+  volume (two-phase: pore pressure, water velocity) and speed^2 are finite
+  and its volume is positive.
 */
 template <class ExecSpace>
 struct PointSoundness
@@ -39,6 +39,8 @@ struct PointSoundness
     using wv_type = WaterParticleViews<ExecSpace>;
     UnmanagedView<typename pv_type::vector_view> x_p;
     UnmanagedView<typename pv_type::tensor_view> sigma_p;
+    UnmanagedView<typename pv_type::tensor_view> eps_p;
+    UnmanagedView<typename pv_type::scalar_view> eps_p_bar_p;
     UnmanagedView<typename pv_type::scalar_view> vol_p;
     bool two_phase;
     UnmanagedView<typename wv_type::scalar_view> p_w_p;
@@ -48,6 +50,8 @@ struct PointSoundness
                     const WaterParticleViews<ExecSpace>& wv )
         : x_p( pv.x_p )
         , sigma_p( pv.sigma_p )
+        , eps_p( pv.eps_p )
+        , eps_p_bar_p( pv.eps_p_bar_p )
         , vol_p( pv.vol_p )
         , two_phase( wv.allocated() )
         , p_w_p( wv.p_w_p )
@@ -63,7 +67,8 @@ struct PointSoundness
         // Any NaN or infinity makes the sum non-finite.
         const double sum =
             x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) + sigma_p( p, 1 ) +
-            sigma_p( p, 2 ) + sigma_p( p, 3 ) + vol_p( p ) +
+            sigma_p( p, 2 ) + sigma_p( p, 3 ) + eps_p( p, 0 ) + eps_p( p, 1 ) +
+            eps_p( p, 2 ) + eps_p( p, 3 ) + eps_p_bar_p( p ) + vol_p( p ) +
             ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) + v_w_p( p, 1 ) : 0.0 );
         return KE::isfinite( sum ) && KE::isfinite( speed2 ) &&
                vol_p( p ) > 0.0;
@@ -143,7 +148,8 @@ double maxDisplacement( const ExecSpace& exec_space,
 //---------------------------------------------------------------------------//
 /*!
   \brief Smallest index of an active point whose position, velocity,
-  stress, volume (two-phase: pore pressure, water velocity) is not finite, or
+  stress, strain, plastic shear strain, volume (two-phase: pore pressure,
+  water velocity) is not finite, or
   whose speed exceeds `speed_limit`; -1 if there is none.
 */
 template <class ExecSpace>

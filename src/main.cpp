@@ -3,8 +3,13 @@
 //                 [--restart CHECKPOINT] [--checkpoint-every-s S]
 //                 [--stop-after-steps N] [--quiet]
 //   rainslide check CASE
+//   (both: [--max-steps N] [--max-memory-gb X] [--max-output-gb X]
+//          [--max-snapshots N], the budget of the run estimate)
 #include <io/mpm_case_reader.hpp>
+#include <io/mpm_output_folder.hpp>
 #include <mpm_config.hpp>
+#include <setup/mpm_point_check.hpp>
+#include <setup/mpm_run_estimate.hpp>
 #include <solver/mpm_run_case.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -24,6 +29,9 @@ namespace
 constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_interrupted = 130;
+//! Cases whose points x polygon vertices exceed this skip the point checks
+//! of `check` (seconds of work; the run still does them).
+constexpr double max_point_tests = 5.0e8;
 
 int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
 {
@@ -51,14 +59,45 @@ int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
     return exit_failed;
 }
 
-void printCheckSummary( const mpm::CaseConfig& config )
+void printCheckSummary( const mpm::CaseConfig& config,
+                        const mpm::RunEstimate& estimate )
 {
     std::cout << config.file << ": ok\n"
               << "  case " << config.name << ": grid " << config.grid.cells[0]
               << " x " << config.grid.cells[1] << " cells of "
               << config.grid.cell_size_m << " m, " << config.materials.size()
               << " material(s), " << config.bodies.size() << " body(ies), "
-              << config.stages.size() << " stage(s)\n";
+              << config.stages.size() << " stage(s)\n"
+              << "  " << mpm::estimateSummary( estimate ) << "\n";
+}
+
+//! The budget options of `check` and `run`.
+void addBudgetOptions( CLI::App& command, mpm::RunBudget& budget )
+{
+    command
+        .add_option( "--max-steps", budget.max_steps,
+                     "refuse a case whose estimated steps exceed this "
+                     "(0 = no limit)" )
+        ->check( CLI::NonNegativeNumber )
+        ->capture_default_str();
+    command
+        .add_option( "--max-memory-gb", budget.max_memory_gb,
+                     "refuse a case whose estimated memory exceeds this many "
+                     "GB (0 = no limit)" )
+        ->check( CLI::NonNegativeNumber )
+        ->capture_default_str();
+    command
+        .add_option( "--max-output-gb", budget.max_output_gb,
+                     "refuse a case whose estimated output exceeds this many "
+                     "GB (0 = no limit)" )
+        ->check( CLI::NonNegativeNumber )
+        ->capture_default_str();
+    command
+        .add_option( "--max-snapshots", budget.max_snapshots,
+                     "refuse a case that writes more snapshots (0 = no "
+                     "limit)" )
+        ->check( CLI::NonNegativeNumber )
+        ->capture_default_str();
 }
 } // namespace
 
@@ -75,6 +114,7 @@ int main( int argc, char* argv[] )
     options.threads =
         std::max( 1, static_cast<int>( std::thread::hardware_concurrency() ) );
     bool quiet = false;
+    mpm::RunBudget budget;
 
     CLI::App* run = app.add_subcommand( "run", "run a case" );
     run->add_option( "case", case_file, "case file (TOML)" )->required();
@@ -99,9 +139,11 @@ int main( int argc, char* argv[] )
                      "stop as on Ctrl-C (checkpoint, exit 130) after this many "
                      "steps" )
         ->check( CLI::PositiveNumber );
+    addBudgetOptions( *run, budget );
 
     CLI::App* check = app.add_subcommand( "check", "validate a case file" );
     check->add_option( "case", case_file, "case file (TOML)" )->required();
+    addBudgetOptions( *check, budget );
 
     CLI11_PARSE( app, argc, argv );
 
@@ -115,9 +157,33 @@ int main( int argc, char* argv[] )
         std::cerr << error.what() << "\n";
         return exit_bad_input;
     }
+    // Refuse what cannot finish or exceeds the budget, before any work.
+    const mpm::RunEstimate estimate = mpm::estimateRun( config );
+    bool cannot_finish = false;
+    const auto refusals =
+        mpm::runRefusals( config, estimate, budget, cannot_finish );
+    if ( !refusals.empty() )
+    {
+        for ( const std::string& refusal : refusals )
+            std::cerr << config.file << ": error: " << refusal << "\n";
+        std::cerr << "  " << mpm::estimateSummary( estimate ) << "\n";
+        return exit_bad_input;
+    }
+    // Errors that show only once the points exist (as a run makes them).
+    double vertices = 0.0;
+    for ( const mpm::BodyConfig& body : config.bodies )
+        vertices += static_cast<double>( body.polygon_m.size() );
+    if ( estimate.points * vertices <= max_point_tests )
+    {
+        const auto point_errors = mpm::pointRefusals( config );
+        for ( const std::string& error : point_errors )
+            std::cerr << config.file << ": error: " << error << "\n";
+        if ( !point_errors.empty() )
+            return exit_bad_input;
+    }
     if ( check->parsed() )
     {
-        printCheckSummary( config );
+        printCheckSummary( config, estimate );
         return 0;
     }
     if ( options.out_dir.empty() && !options.restart_file.empty() )
@@ -128,6 +194,13 @@ int main( int argc, char* argv[] )
     }
     if ( options.out_dir.empty() )
         options.out_dir = "results/" + config.name;
+    if ( const std::string unsafe = mpm::unsafeOutputFolder( options.out_dir );
+         !unsafe.empty() )
+    {
+        std::cerr << "rainslide: error: --out '" << options.out_dir
+                  << "': " << unsafe << "\n";
+        return exit_bad_input;
+    }
     options.progress = !quiet;
     try
     {

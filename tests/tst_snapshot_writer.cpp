@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -447,4 +448,102 @@ TEST( JsonOutput, writes_valid_json_atomically )
         EXPECT_NE( std::string( e.what() ).find( bad ), std::string::npos )
             << e.what();
     }
+}
+
+//---------------------------------------------------------------------------//
+// Output safety (issue 12): a symlink planted at a temporary name is
+// removed, never followed; a failed write (disk full) is never published.
+//---------------------------------------------------------------------------//
+TEST( SnapshotWriter, symlink_at_partial_is_not_followed )
+{
+    TempDir tmp;
+    const fs::path target = tmp.path / "precious.txt";
+    std::ofstream( target ) << "precious";
+    const fs::path out = tmp.path / "out";
+    fs::create_directories( out );
+    fs::create_symlink( target, out / "particles.h5.partial" );
+    {
+        mpm::SnapshotWriter writer( out.string() );
+        Fields( 0 ).write( writer, 0.0, "gravity", 0.0, 0 );
+    }
+    std::ifstream in( target );
+    std::string text;
+    std::getline( in, text );
+    EXPECT_EQ( text, "precious" );
+    EXPECT_FALSE( fs::is_symlink( out / "particles.h5" ) );
+    EXPECT_TRUE( fs::is_regular_file( out / "particles.h5" ) );
+}
+
+TEST( JsonOutput, symlink_at_temporary_file_is_not_followed )
+{
+    TempDir tmp;
+    const fs::path target = tmp.path / "precious.txt";
+    std::ofstream( target ) << "precious";
+    const fs::path path = tmp.path / "metrics.json";
+    fs::create_symlink( target, path.string() + ".tmp." +
+                                    std::to_string( ::getpid() ) );
+    mpm::writeJsonAtomically( path.string(), { { "status", "completed" } } );
+    std::ifstream in( target );
+    std::string text;
+    std::getline( in, text );
+    EXPECT_EQ( text, "precious" );
+    EXPECT_TRUE( fs::is_regular_file( path ) );
+}
+
+TEST( SnapshotWriter, failed_write_is_never_published )
+{
+    TempDir tmp;
+    const fs::path out = tmp.path / "out";
+    {
+        mpm::SnapshotWriter writer( out.string() );
+        Fields( 0 ).write( writer, 0.0, "gravity", 0.0, 0 );
+    }
+    const auto complete_size = fs::file_size( out / "particles.h5" );
+
+    // A second run in the same folder on a "full disk": files may not grow
+    // past 64 KiB (RLIMIT_FSIZE; SIGXFSZ ignored so write() fails).
+    std::vector<double> big_x( 2 * 100000, 1.0 );
+    auto* old_handler = std::signal( SIGXFSZ, SIG_IGN );
+    rlimit old_limit;
+    ::getrlimit( RLIMIT_FSIZE, &old_limit );
+    rlimit limit = old_limit;
+    limit.rlim_cur = 64 * 1024;
+    ASSERT_EQ( ::setrlimit( RLIMIT_FSIZE, &limit ), 0 );
+    bool threw = false, finalize_threw = false;
+    {
+        mpm::SnapshotWriter writer( out.string() );
+        try
+        {
+            writer.write( 0.0, "gravity", 0.0, 0, 100000,
+                          { { "x", big_x.data(), 2, "m" } }, {} );
+        }
+        catch ( const std::exception& )
+        {
+            threw = true;
+        }
+        try
+        {
+            writer.finalize();
+        }
+        catch ( const std::runtime_error& e )
+        {
+            finalize_threw = true;
+            EXPECT_NE( std::string( e.what() ).find( "was not renamed" ),
+                       std::string::npos )
+                << e.what();
+        }
+    }
+    ::setrlimit( RLIMIT_FSIZE, &old_limit );
+    std::signal( SIGXFSZ, old_handler );
+    EXPECT_TRUE( threw );
+    EXPECT_TRUE( finalize_threw );
+    // The complete file of the first run is kept.
+    EXPECT_EQ( fs::file_size( out / "particles.h5" ), complete_size );
+    const hid_t file = H5Fopen( ( out / "particles.h5" ).c_str(),
+                                H5F_ACC_RDONLY, H5P_DEFAULT );
+    ASSERT_GE( file, 0 );
+    EXPECT_EQ(
+        readAttr<long long>( file, "/", "snapshot_count", H5T_NATIVE_LLONG ),
+        1 );
+    H5Fclose( file );
 }

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace
@@ -96,6 +98,55 @@ TYPED_TEST( StepDiagnostics, stored_retention_state_changes_nothing )
     EXPECT_EQ( a.k_rel, b.k_rel );
     EXPECT_EQ( a.sigma, b.sigma );
     EXPECT_EQ( a.x, b.x );
+}
+
+//---------------------------------------------------------------------------//
+// A NaN strain or plastic shear strain stops the run naming the quantity
+// (issue 12: the soundness check covered only x, stress, volume, p_w, v_w
+// and the speed).
+TYPED_TEST( StepDiagnostics, non_finite_strain_is_unsound )
+{
+    const auto config = unsaturatedColumn( false );
+    const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for ( const bool plastic : { false, true } )
+    {
+        mpm::Simulation<TypeParam> sim( config );
+        const double dt = 0.5 * sim.waveSpeedLimit().dt_limit;
+        sim.advance( dt, settings );
+        if ( plastic )
+        {
+            auto h = Kokkos::create_mirror_view_and_copy(
+                Kokkos::HostSpace(), sim.particles.eps_p_bar_p );
+            h( 3 ) = nan;
+            Kokkos::deep_copy( sim.particles.eps_p_bar_p, h );
+        }
+        else
+        {
+            auto h = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
+                                                          sim.particles.eps_p );
+            h( 3, 2 ) = nan;
+            Kokkos::deep_copy( sim.particles.eps_p, h );
+        }
+        sim.stateChanged();
+        EXPECT_EQ( mpm::findUnstablePoint( TypeParam(), sim.particles,
+                                           sim.water_particles, 1.0e30 ),
+                   3 );
+        try
+        {
+            sim.checkStability( dt, sim.waveSpeedLimit() );
+            ADD_FAILURE() << "a NaN strain passed the stability check";
+        }
+        catch ( const mpm::SimulationError& e )
+        {
+            const std::string expected =
+                plastic ? "plastic shear strain (eps_p_bar) is not finite"
+                        : "strain is not finite";
+            EXPECT_NE( std::string( e.what() ).find( expected ),
+                       std::string::npos )
+                << e.what();
+        }
+    }
 }
 
 } // namespace

@@ -57,6 +57,23 @@ inline std::string formatNumber( const double v )
 }
 
 //---------------------------------------------------------------------------//
+/*!
+  \brief Text for a message: control characters as '?' and, beyond 60
+  characters, the first 40 followed by "... (N characters)".
+*/
+inline std::string shortText( const std::string_view text )
+{
+    const std::size_t shown = text.size() > 60 ? 40 : text.size();
+    std::string result( text.substr( 0, shown ) );
+    for ( char& c : result )
+        if ( static_cast<unsigned char>( c ) < 0x20 || c == 0x7f )
+            c = '?';
+    if ( shown < text.size() )
+        result += "... (" + std::to_string( text.size() ) + " characters)";
+    return result;
+}
+
+//---------------------------------------------------------------------------//
 //! \brief What a TOML value is, for "found ..." in messages.
 inline std::string describeNode( const toml::node& node )
 {
@@ -72,7 +89,7 @@ inline std::string describeNode( const toml::node& node )
     if ( auto v = node.as_boolean() )
         return v->get() ? "true" : "false";
     if ( auto v = node.as_string() )
-        return "string \"" + v->get() + "\"";
+        return "string \"" + shortText( v->get() ) + "\"";
     if ( auto v = node.as_array() )
         return v->empty() ? std::string( "an empty array" )
                           : "an array of " + std::to_string( v->size() ) +
@@ -108,16 +125,22 @@ inline int editDistance( const std::string_view a, const std::string_view b )
 //---------------------------------------------------------------------------//
 /*!
   \brief The known word closest to word if it is a plausible typo (2 edits,
-  3 for words of 10 or more characters), else "".
+  3 for words of 10 or more characters), else "". Candidates whose length
+  differs by more than that are skipped (the distance is at least the
+  difference), so a long word costs nothing.
 */
 inline std::string closestWord( const std::string& word,
                                 const std::vector<std::string>& known )
 {
-    const int limit = word.size() >= 10 ? 3 : 2;
+    const std::size_t limit = word.size() >= 10 ? 3 : 2;
     std::string best;
-    int best_distance = limit + 1;
+    int best_distance = static_cast<int>( limit ) + 1;
     for ( const auto& candidate : known )
     {
+        const std::size_t longer = std::max( word.size(), candidate.size() );
+        const std::size_t shorter = std::min( word.size(), candidate.size() );
+        if ( longer - shorter > limit )
+            continue;
         const int distance = editDistance( word, candidate );
         if ( distance < best_distance )
         {

@@ -1,9 +1,10 @@
+#include <io/mpm_case_file.hpp>
 #include <io/mpm_case_include.hpp>
+#include <io/mpm_case_limits.hpp>
+#include <io/mpm_toml_prescan.hpp>
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <algorithm>
+#include <filesystem>
 #include <vector>
 
 namespace mpm
@@ -12,8 +13,21 @@ namespace Impl
 {
 namespace
 {
-//! Included files may include others up to this depth.
-constexpr int max_include_depth = 8;
+//! What the includes of one case have used of the limits.
+struct IncludeBudget
+{
+    int files = 0;
+    std::size_t bytes = 0;
+    bool exhausted = false; //!< a limit was reported; stop including
+};
+
+//! The canonical form of a path ("./a.toml" and "a.toml" are one file).
+std::string canonicalPath( const std::string& path )
+{
+    std::error_code error;
+    const auto canonical = std::filesystem::weakly_canonical( path, error );
+    return error ? path : canonical.string();
+}
 
 //! Directory part of a path, with a trailing '/', or "" for a bare name.
 std::string directoryOf( const std::string& path )
@@ -78,8 +92,28 @@ includeList( const toml::node& node, Diagnostics& diag )
     return files;
 }
 
+//! Why the file at path cannot be included now, or "".
+std::string includeRefusal( const std::string& canonical,
+                            const std::vector<std::string>& chain,
+                            const IncludeBudget& budget )
+{
+    for ( const std::string& open : chain )
+        if ( open == canonical )
+            return "'" + canonical +
+                   "' includes itself (directly or through other files)";
+    if ( chain.size() >= static_cast<std::size_t>( max_include_depth ) )
+        return "includes nested deeper than " +
+               std::to_string( max_include_depth ) + " files";
+    if ( budget.files >= max_include_files )
+        return "expected at most " + std::to_string( max_include_files ) +
+               " included files in all (repeats counted), found more; "
+               "include each shared file once";
+    return "";
+}
+
 void resolve( toml::table& root, const std::string& file_name,
-              Diagnostics& diag, std::vector<std::string>& chain )
+              Diagnostics& diag, std::vector<std::string>& chain,
+              IncludeBudget& budget )
 {
     const toml::node* include = root.get( "include" );
     if ( !include )
@@ -87,37 +121,41 @@ void resolve( toml::table& root, const std::string& file_name,
     toml::table merged;
     for ( const auto& [name, where] : includeList( *include, diag ) )
     {
+        if ( budget.exhausted )
+            break;
         const std::string path = !name.empty() && name[0] == '/'
                                      ? name
                                      : directoryOf( file_name ) + name;
-        bool circular = false;
-        for ( const std::string& open : chain )
-            circular = circular || open == path;
-        if ( circular || chain.size() >= max_include_depth )
+        const std::string canonical = canonicalPath( path );
+        const std::string refusal = includeRefusal( canonical, chain, budget );
+        if ( !refusal.empty() )
         {
-            diag.keyError( *where, "include",
-                           circular ? "'" + path +
-                                          "' includes itself (directly or "
-                                          "through other files)"
-                                    : "includes nested deeper than " +
-                                          std::to_string( max_include_depth ) +
-                                          " files" );
+            diag.keyError( *where, "include", refusal );
+            budget.exhausted = budget.files >= max_include_files;
             continue;
         }
-        std::ifstream in( path, std::ios::binary );
-        if ( !in )
+        ++budget.files;
+        std::string text;
+        try
+        {
+            // The per-file limit, or what is left of the case's total.
+            const std::size_t left = max_case_total_bytes - budget.bytes;
+            text =
+                readRegularFile( path, std::min( left, max_case_file_bytes ) );
+        }
+        catch ( const CaseFileError& e )
         {
             diag.keyError( *where, "include",
-                           "cannot open the included file '" + path + "' (" +
-                               std::strerror( errno ) + ")" );
+                           "cannot include '" + path + "': " + e.what() );
             continue;
         }
-        std::ostringstream text;
-        text << in.rdbuf();
+        budget.bytes += text.size();
+        if ( !prescanToml( text, path, diag ) )
+            continue;
         toml::table included;
         try
         {
-            included = toml::parse( text.str(), path );
+            included = toml::parse( text, path );
         }
         catch ( const toml::parse_error& e )
         {
@@ -125,8 +163,8 @@ void resolve( toml::table& root, const std::string& file_name,
                         "invalid TOML: " + std::string( e.description() ) );
             continue;
         }
-        chain.push_back( path );
-        resolve( included, path, diag, chain );
+        chain.push_back( canonical );
+        resolve( included, path, diag, chain, budget );
         chain.pop_back();
         overlay( merged, included );
     }
@@ -142,10 +180,12 @@ void resolve( toml::table& root, const std::string& file_name,
 
 //---------------------------------------------------------------------------//
 void resolveIncludes( toml::table& root, const std::string& file_name,
-                      Diagnostics& diag )
+                      Diagnostics& diag, const std::size_t bytes_read )
 {
-    std::vector<std::string> chain{ file_name };
-    resolve( root, file_name, diag, chain );
+    std::vector<std::string> chain{ canonicalPath( file_name ) };
+    IncludeBudget budget;
+    budget.bytes = std::min( bytes_read, max_case_total_bytes );
+    resolve( root, file_name, diag, chain, budget );
 }
 
 } // namespace Impl

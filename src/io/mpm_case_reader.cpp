@@ -1,21 +1,20 @@
 #include <io/mpm_case_analysis.hpp>
 #include <io/mpm_case_conditions.hpp>
+#include <io/mpm_case_file.hpp>
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_case_include.hpp>
+#include <io/mpm_case_limits.hpp>
 #include <io/mpm_case_materials.hpp>
 #include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
+#include <io/mpm_toml_prescan.hpp>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 
 namespace mpm
 {
@@ -187,6 +186,18 @@ class CaseParser
                     cells_ok = false;
                 }
             }
+            const long long total =
+                static_cast<long long>( _config.grid.cells[0] ) *
+                _config.grid.cells[1];
+            if ( cells_ok && total > Impl::max_grid_cells )
+            {
+                _diag.keyError( *cells, "grid.cells",
+                                "expected at most " +
+                                    std::to_string( Impl::max_grid_cells ) +
+                                    " cells (nx * ny), found " +
+                                    std::to_string( total ) );
+                cells_ok = false;
+            }
         }
         if ( origin )
             _config.grid.origin_m = *origin;
@@ -267,8 +278,8 @@ class CaseParser
                     unknownMaterial( r.find( "material" )->source(),
                                      path + ".material", *name );
             }
-            if ( auto polygon =
-                     r.points( "polygon_m", 3, "m", Need::Required ) )
+            if ( auto polygon = r.points( "polygon_m", 3, "m", Need::Required,
+                                          Impl::max_polygon_vertices ) )
             {
                 Impl::checkBodyPolygon(
                     *polygon, *r.find( "polygon_m" ), path + ".polygon_m",
@@ -523,6 +534,9 @@ CaseConfig parseCase( const std::string& toml_text,
                       const std::string& file_name )
 {
     toml::table root;
+    Diagnostics prescan( file_name );
+    if ( !Impl::prescanToml( toml_text, file_name, prescan ) )
+        throw CaseError( prescan.report() );
     try
     {
         root = toml::parse( std::string_view( toml_text ),
@@ -539,7 +553,7 @@ CaseConfig parseCase( const std::string& toml_text,
     CaseConfig config;
     config.file = file_name;
     Diagnostics diag( file_name );
-    Impl::resolveIncludes( root, file_name, diag );
+    Impl::resolveIncludes( root, file_name, diag, toml_text.size() );
     if ( !diag.empty() ) // without an included file, the rest is noise
         throw CaseError( diag.report() );
     CaseParser( diag, config ).parse( root );
@@ -552,13 +566,17 @@ CaseConfig parseCase( const std::string& toml_text,
 //---------------------------------------------------------------------------//
 CaseConfig readCaseFile( const std::string& path )
 {
-    std::ifstream in( path, std::ios::binary );
-    if ( !in )
-        throw CaseError( path + ": error: cannot open the case file (" +
-                         std::strerror( errno ) + ")" );
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseCase( text.str(), path );
+    std::string text;
+    try
+    {
+        text = Impl::readRegularFile( path, Impl::max_case_file_bytes );
+    }
+    catch ( const Impl::CaseFileError& e )
+    {
+        throw CaseError( path +
+                         ": error: cannot open the case file: " + e.what() );
+    }
+    return parseCase( text, path );
 }
 
 } // namespace mpm

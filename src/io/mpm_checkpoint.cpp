@@ -1,6 +1,7 @@
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <io/mpm_hdf5.hpp>
+#include <io/mpm_safe_file.hpp>
 #include <mpm_config.hpp>
 
 #include <hdf5.h>
@@ -213,13 +214,23 @@ void writeArrays( const std::string& file, const hid_t root,
         const hid_t space = h5.open(
             H5Screate_simple( int( dims.size() ), dims.data(), nullptr ),
             "H5Screate_simple", H5Sclose, path );
+        // Non-empty arrays in one chunk with a Fletcher-32 checksum: H5Dread
+        // refuses a damaged one (a flipped byte restored silently before).
+        const std::size_t count =
+            a.integer ? a.integers.size() : a.reals.size();
+        const hid_t dcpl = h5.open( H5Pcreate( H5P_DATASET_CREATE ),
+                                    "H5Pcreate", H5Pclose, path );
+        if ( count > 0 )
+        {
+            h5.check( H5Pset_chunk( dcpl, int( dims.size() ), dims.data() ),
+                      "H5Pset_chunk", path );
+            h5.check( H5Pset_fletcher32( dcpl ), "H5Pset_fletcher32", path );
+        }
         const hid_t dset =
             h5.open( H5Dcreate2( root, path.c_str(),
                                  a.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE,
-                                 space, lcpl, H5P_DEFAULT, H5P_DEFAULT ),
+                                 space, lcpl, dcpl, H5P_DEFAULT ),
                      "H5Dcreate2", H5Dclose, path );
-        const std::size_t count =
-            a.integer ? a.integers.size() : a.reals.size();
         if ( count > 0 )
             h5.check(
                 H5Dwrite( dset, a.integer ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE,
@@ -290,8 +301,10 @@ void syncToDisk( const std::string& path, const int flags )
 void writeFile( const std::string& path, const Checkpoint& c )
 {
     Hdf5Ops h5( who, path );
+    // Exclusive: a symlink planted at path is removed, never followed.
+    removeStale( path );
     const hid_t file = h5.open(
-        H5Fcreate( path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT ),
+        H5Fcreate( path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT ),
         "H5Fcreate", H5Fclose, "/" );
     const CheckpointIdentity& id = c.identity;
     const std::vector<std::pair<const char*, AttributeValue>> attributes = {

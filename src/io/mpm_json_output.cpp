@@ -1,4 +1,5 @@
 #include <io/mpm_json_output.hpp>
+#include <io/mpm_safe_file.hpp>
 
 #include <cerrno>
 #include <cstdio>
@@ -34,14 +35,17 @@ void writeTextAtomically( const std::string& path, const std::string& text )
     const std::string tmp_path =
         path + ".tmp." + std::to_string( static_cast<long>( ::getpid() ) );
 
-    const int fd =
-        ::open( tmp_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC,
-                S_IRUSR | S_IWUSR | S_IRGRP | S_IROTH );
-    if ( fd < 0 )
+    // Created exclusively: a symlink planted at tmp_path is not followed.
+    int fd = -1;
+    try
     {
-        const int error_number = errno;
-        throwErrno( tmp_path, "open (temporary file for '" + path + "')",
-                    error_number );
+        fd = createExclusive( tmp_path );
+    }
+    catch ( const std::runtime_error& e )
+    {
+        throw std::runtime_error( std::string( "mpm::writeTextAtomically: " ) +
+                                  e.what() + " (temporary file for '" + path +
+                                  "')" );
     }
 
     // Write everything, retrying on short writes and EINTR.

@@ -1,7 +1,12 @@
 #include <io/mpm_probe_recorder.hpp>
+#include <io/mpm_safe_file.hpp>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +16,14 @@ namespace mpm
 namespace
 {
 constexpr double gravity_for_K = 9.81; // m/s^2
+
+//! Shortest text that reads back as exactly t (a restart compares times).
+std::string timeText( const double t )
+{
+    char buf[32];
+    const auto result = std::to_chars( buf, buf + sizeof buf, t );
+    return std::string( buf, result.ptr );
+}
 
 //! The first multiple of interval after t (t itself counts as passed).
 double nextMultiple( const double t, const double interval )
@@ -71,6 +84,7 @@ void ProbeRecorder::open( const double resume_time_s )
     const std::string partial = _path + ".partial";
     // Rows of the interrupted session up to the restart time.
     std::vector<std::string> kept;
+    double last_kept_s = -1.0;
     if ( resume_time_s >= 0.0 )
     {
         std::ifstream earlier( _path );
@@ -78,12 +92,31 @@ void ProbeRecorder::open( const double resume_time_s )
             earlier.open( partial );
         std::string line;
         std::getline( earlier, line ); // header
-        while ( std::getline( earlier, line ) )
-            if ( std::stod( line.substr( 0, line.find( ',' ) ) ) <=
-                 resume_time_s * ( 1.0 + 1.0e-12 ) )
+        for ( long row = 2; std::getline( earlier, line ); ++row )
+        {
+            const std::string time = line.substr( 0, line.find( ',' ) );
+            char* end = nullptr;
+            const double t = std::strtod( time.c_str(), &end );
+            if ( time.empty() || *end != '\0' || !std::isfinite( t ) )
+                throw std::runtime_error(
+                    "cannot continue '" + _path + "': line " +
+                    std::to_string( row ) +
+                    ": expected the time in s as the first column, found '" +
+                    time.substr( 0, 40 ) + "'" );
+            // Times are written exactly (timeText): rows up to the
+            // checkpoint's time are the uninterrupted run's.
+            if ( t <= resume_time_s )
+            {
                 kept.push_back( line );
+                last_kept_s = std::max( last_kept_s, t );
+            }
+        }
     }
     std::remove( _path.c_str() );
+    std::error_code ec; // a failure shows when the file is opened
+    std::filesystem::create_directories(
+        std::filesystem::path( _path ).parent_path(), ec );
+    removeStale( partial ); // a planted symlink is not followed
     _out.open( partial, std::ios::trunc );
     if ( !_out )
         throw std::runtime_error( "cannot write " + partial );
@@ -94,8 +127,11 @@ void ProbeRecorder::open( const double resume_time_s )
     for ( const std::string& line : kept )
         _out << line << '\n';
     _out.flush();
+    // Due next as in the uninterrupted run: after the last row recorded
+    // (not after the checkpoint's time, which may lie a rounding error
+    // below a due time whose row the uninterrupted run writes next step).
     _next_time_s =
-        resume_time_s < 0.0 ? 0.0 : nextMultiple( resume_time_s, _interval_s );
+        last_kept_s < 0.0 ? 0.0 : nextMultiple( last_kept_s, _interval_s );
 }
 
 //---------------------------------------------------------------------------//
@@ -108,8 +144,8 @@ void ProbeRecorder::record( const RunProgress& progress,
         const int p = probe.point;
         auto pair = [&]( const std::vector<double>& field )
         { _out << ',' << field[2 * p] << ',' << field[2 * p + 1]; };
-        _out << progress.time_s << ',' << progress.stage << ',' << probe.name
-             << ',' << snapshot.id[p];
+        _out << timeText( progress.time_s ) << ',' << progress.stage << ','
+             << probe.name << ',' << snapshot.id[p];
         pair( snapshot.x );
         pair( snapshot.displacement );
         pair( snapshot.v );

@@ -1,5 +1,6 @@
 #include <io/mpm_hdf5.hpp>
 #include <io/mpm_json_output.hpp>
+#include <io/mpm_safe_file.hpp>
 #include <io/mpm_snapshot_writer.hpp>
 
 #include <hdf5.h>
@@ -251,9 +252,12 @@ void SnapshotWriter::preparePaths( const std::string& out_dir )
 //---------------------------------------------------------------------------//
 void SnapshotWriter::createFile()
 {
-    // Create the file with its root attributes and /snapshots.
+    // Create the file with its root attributes and /snapshots. Unlink what
+    // is there and create exclusively: a planted symlink is removed, never
+    // followed (O_CREAT | O_EXCL does not follow one).
     Hdf5Ops h5( who, _partial_path );
-    _file_id = h5.check( H5Fcreate( _partial_path.c_str(), H5F_ACC_TRUNC,
+    removeStale( _partial_path );
+    _file_id = h5.check( H5Fcreate( _partial_path.c_str(), H5F_ACC_EXCL,
                                     H5P_DEFAULT, H5P_DEFAULT ),
                          "H5Fcreate", "/" );
     try
@@ -476,7 +480,9 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
     }
     catch ( ... )
     {
-        // Drop the incomplete group so the next write() can reuse its name.
+        // Drop the incomplete group so the next write() can reuse its name;
+        // the file may be truncated (a full disk): never publish it.
+        _write_failed = true;
         H5Ldelete( _file_id, g.c_str(), H5P_DEFAULT );
         H5Eclear2( H5E_DEFAULT );
         throw;
@@ -517,8 +523,14 @@ void SnapshotWriter::finalize()
     _finalized = true;
 
     // Close the file, then publish it under its final name.
-    Hdf5Ops( who, _partial_path )
-        .check( H5Fclose( _file_id ), "H5Fclose", "/" );
+    const herr_t closed = H5Fclose( _file_id );
+    if ( _write_failed )
+        throw std::runtime_error(
+            "mpm::SnapshotWriter::finalize: a snapshot write failed (disk "
+            "full?); '" +
+            _partial_path + "' is incomplete and was not renamed to '" +
+            _h5_path + "' (an earlier one is kept)" );
+    Hdf5Ops( who, _partial_path ).check( closed, "H5Fclose", "/" );
     if ( std::rename( _partial_path.c_str(), _h5_path.c_str() ) != 0 )
     {
         const int error_number = errno;

@@ -145,7 +145,9 @@ class SnapshotWriter
     /*!
       \brief Closes the file, renames `.h5.partial` to `.h5` (std::rename)
       and writes `<stem>.xdmf` through a temporary file + rename.
-      Idempotent: later calls do nothing.
+      Idempotent: later calls do nothing. After a failed write() (a full
+      disk) the file is closed but not published: the `.partial` stays, an
+      earlier `<stem>.h5` is kept, and finalize() throws.
     */
     void finalize();
 
@@ -196,6 +198,7 @@ class SnapshotWriter
     long _vertex_id_count = 0;  // current size of /vertex_ids
     std::vector<SnapshotRecord> _records;
     bool _finalized = false;
+    bool _write_failed = false; // a write() threw: never publish the file
 };
 
 } // namespace mpm

@@ -3,6 +3,7 @@
 
 #include <io/mpm_case_config.hpp>
 #include <io/mpm_case_diagnostics.hpp>
+#include <io/mpm_case_limits.hpp>
 
 #include <toml++/toml.h>
 
@@ -113,7 +114,8 @@ class TableReader
                              name ) )
                 continue;
             const std::string guess = closestWord( name, known );
-            std::string text = "key '" + keyPath( name ) + "': unknown key";
+            std::string text =
+                "key '" + shortText( keyPath( name ) ) + "': unknown key";
             if ( !guess.empty() && _table.get( guess ) == nullptr )
             {
                 text += "; did you mean '" + guess + "'?";
@@ -187,20 +189,39 @@ class TableReader
         return n->as_boolean()->get();
     }
 
+    /*!
+      \brief A name (non-empty, at most max_name_length characters, no
+      control characters) or, with allow_text, any text of at most
+      max_text_length characters without NUL.
+    */
     std::optional<std::string> string( const std::string& key, const Need need,
-                                       const bool allow_empty = false )
+                                       const bool allow_text = false )
     {
+        const std::size_t max_length =
+            allow_text ? max_text_length : max_name_length;
+        const std::string expected =
+            allow_text ? "a string of at most " + std::to_string( max_length ) +
+                             " characters without NUL"
+                       : "a non-empty name of at most " +
+                             std::to_string( max_length ) +
+                             " characters without control characters";
         const auto* n = node( key, need, "a string" );
         if ( !n )
             return std::nullopt;
-        if ( !n->is_string() ||
-             ( !allow_empty && n->as_string()->get().empty() ) )
+        const auto* s = n->as_string();
+        auto bad = [allow_text]( const char c )
         {
-            _diag.mismatch( *n, keyPath( key ),
-                            allow_empty ? "a string" : "a non-empty string" );
+            const auto u = static_cast<unsigned char>( c );
+            return allow_text ? u == 0 : u < 0x20 || u == 0x7f;
+        };
+        if ( !s || ( !allow_text && s->get().empty() ) ||
+             s->get().size() > max_length ||
+             std::any_of( s->get().begin(), s->get().end(), bad ) )
+        {
+            _diag.mismatch( *n, keyPath( key ), expected );
             return std::nullopt;
         }
-        return n->as_string()->get();
+        return s->get();
     }
 
     //! \brief Index of the value of key in options, or an error.
@@ -239,20 +260,20 @@ class TableReader
         return n ? readPoint( *n, keyPath( key ), unit, _diag ) : std::nullopt;
     }
 
-    //! \brief A list of points [[x, y], ...]; at least min_count of them.
-    std::optional<std::vector<Point2>> points( const std::string& key,
-                                               const std::size_t min_count,
-                                               const std::string& unit,
-                                               const Need need )
+    //! \brief A list of points [[x, y], ...]; min_count to max_count.
+    std::optional<std::vector<Point2>>
+    points( const std::string& key, const std::size_t min_count,
+            const std::string& unit, const Need need,
+            const std::size_t max_count = max_list_points )
     {
-        const std::string expected = "an array of at least " +
-                                     std::to_string( min_count ) +
-                                     " points [[x, y], ...] in " + unit;
+        const std::string expected =
+            "an array of " + std::to_string( min_count ) + " to " +
+            std::to_string( max_count ) + " points [[x, y], ...] in " + unit;
         const auto* n = node( key, need, expected );
         if ( !n )
             return std::nullopt;
         const auto* arr = n->as_array();
-        if ( !arr || arr->size() < min_count )
+        if ( !arr || arr->size() < min_count || arr->size() > max_count )
         {
             _diag.mismatch( *n, keyPath( key ), expected );
             return std::nullopt;

@@ -53,6 +53,16 @@ std::string describePoint( const ParticleViews<ExecSpace>& pv,
     return msg.str();
 }
 
+//! Whether every component of row p of a host tensor view is finite.
+template <class HostView>
+bool finiteRow( const HostView& v, const int p )
+{
+    for ( std::size_t c = 0; c < v.extent( 1 ); ++c )
+        if ( !std::isfinite( v( p, c ) ) )
+            return false;
+    return true;
+}
+
 //! Which quantity of point p is unstable, with its value.
 template <class ExecSpace>
 std::string unstableQuantity( const ParticleViews<ExecSpace>& pv,
@@ -76,8 +86,14 @@ std::string unstableQuantity( const ParticleViews<ExecSpace>& pv,
         what << "volume " << vol( p ) << " m^3/m is not positive and finite";
     else if ( wv.allocated() && !std::isfinite( hostCopy( wv.p_w_p )( p ) ) )
         what << "pore pressure is not finite";
-    else
+    else if ( !finiteRow( hostCopy( pv.sigma_p ), p ) )
         what << "stress is not finite";
+    else if ( !finiteRow( hostCopy( pv.eps_p ), p ) )
+        what << "strain is not finite";
+    else if ( !std::isfinite( hostCopy( pv.eps_p_bar_p )( p ) ) )
+        what << "plastic shear strain (eps_p_bar) is not finite";
+    else
+        what << "water velocity is not finite";
     return what.str();
 }
 

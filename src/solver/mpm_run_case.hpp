@@ -3,6 +3,7 @@
 
 #include <io/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
+#include <io/mpm_checkpoint_check.hpp>
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_snapshot_writer.hpp>
@@ -21,6 +22,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -194,6 +196,10 @@ Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
         checkpoint, options.restart_file, checkpointIdentity( config, sim ) );
     if ( !mismatch.empty() )
         throw RestartError( mismatch );
+    const std::string range = checkpointRangeError( checkpoint, config );
+    if ( !range.empty() )
+        throw RestartError( "checkpoint '" + options.restart_file +
+                            "' is damaged: " + range );
     if ( checkpoint.identity.backend != ExecSpace::name() )
         std::cerr << "rainslide: note: the checkpoint was written on "
                   << checkpoint.identity.backend << ", this run uses "
@@ -247,6 +253,22 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
             resumeFromCheckpoint( sim, config, options, earlier_snapshots );
     // Refuse a fixed time step above the stable limit before writing anything.
     chooseTimeStep( sim.solver, sim.waveSpeedLimit() );
+    // Accepted: an old metrics.json must not survive a run that then fails
+    // to write one (a refused run leaves the folder as it was).
+    std::filesystem::remove( options.out_dir + "/metrics.json" );
+    // The probe rows before the particles: a damaged probes.csv must not
+    // cut particles.h5 to the kept snapshots.
+    try
+    {
+        probes.open( resumed ? resumed->time_s : -1.0 );
+    }
+    catch ( const std::exception& error )
+    {
+        if ( !resumed )
+            throw;
+        throw RestartError( "cannot restart from checkpoint '" +
+                            options.restart_file + "': " + error.what() );
+    }
     SnapshotWriter writer( options.out_dir, "particles", earlier_snapshots,
                            resumed ? resumed->snapshots
                                    : SnapshotSeriesMark() );
@@ -257,7 +279,6 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                              resumed ? resumed->wall_s : 0.0,
                              options.stop_after_steps );
     observer.probes = &probes;
-    probes.open( resumed ? resumed->time_s : -1.0 );
     installInterruptHandler();
 
     nlohmann::json metrics = {
@@ -306,6 +327,21 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     metrics["status"] = status == RunStatus::Completed     ? "completed"
                         : status == RunStatus::Interrupted ? "interrupted"
                                                            : "unstable";
+    // A completed run whose quasi-static stage ran out of time unconverged.
+    std::vector<std::string> unconverged;
+    for ( const StageSummary& stage : summary.stages )
+        if ( !stage.converged && stage.stop_reason != "interrupted" )
+            unconverged.push_back( stage.name );
+    if ( status == RunStatus::Completed && !unconverged.empty() )
+    {
+        metrics["status"] = "unconverged";
+        metrics["unconverged_stages"] = unconverged;
+        std::cerr << "rainslide: warning: quasi-static stage(s) did not "
+                     "converge within duration_s: "
+                  << unconverged.front()
+                  << ( unconverged.size() > 1 ? " and others" : "" )
+                  << " (metrics.json: status \"unconverged\")\n";
+    }
     metrics["steps"] = steps;
     metrics["wall_s"] = wall_s;
     metrics["simulated_time_s"] = sim.time;

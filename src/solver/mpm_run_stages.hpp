@@ -230,7 +230,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                      stage.gravity_m_per_s2[1], stage.damping };
         const double window_s =
             quasi_static ? quasiStaticWindow( config, stage ) : 0.0;
-        const double end_tolerance = 1.0e-12 * stage.duration_s;
+        // Round-off of the summed steps, at most 1 ns: relative to a long
+        // stage it would exceed the snapshot interval.
+        const double end_tolerance =
+            std::min( 1.0e-12 * stage.duration_s, 1.0e-9 );
 
         while ( progress.stage_time_s < stage.duration_s - end_tolerance )
         {

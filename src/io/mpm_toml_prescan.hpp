@@ -1,0 +1,33 @@
+#ifndef MPM_TOML_PRESCAN_HPP
+#define MPM_TOML_PRESCAN_HPP
+
+#include <io/mpm_case_diagnostics.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace mpm
+{
+namespace Impl
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Check TOML text, before toml++ parses it, for what the parser
+  does not survive: keys, arrays and inline tables nested deeper than
+  max_nesting_depth (toml++ recurses and overflows the stack) and a byte
+  outside ASCII outside strings and comments (never valid TOML; toml++
+  3.3 reaches __builtin_unreachable on it in debug builds).
+
+  Strings and comments are skipped; the nesting depth at a character is
+  the number of open '[' and '{' plus the dots of the dotted key it is
+  part of. The first problem is reported in diag at its line and column.
+
+  \return Whether the text passed (nothing was reported).
+*/
+bool prescanToml( std::string_view text, const std::string& file_name,
+                  Diagnostics& diag );
+
+} // namespace Impl
+} // namespace mpm
+
+#endif // MPM_TOML_PRESCAN_HPP

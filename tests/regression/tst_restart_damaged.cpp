@@ -1,0 +1,198 @@
+// Restarts from damaged files (issue 12): a checkpoint with out-of-range
+// indices or non-finite values, or a malformed probes.csv, is refused with
+// exit 2 before anything is written (once a SIGSEGV in G2P, a run reading
+// out of bounds to "completed", or particles.h5 cut to the kept snapshots).
+#include <mpm_test_cli.hpp>
+
+#include <io/mpm_checkpoint.hpp>
+
+#include <hdf5.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+using mpm_test::CommandResult;
+
+CommandResult runCommand( const std::string& args )
+{
+    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
+                                             "rainslide_damaged.log" );
+}
+
+//! A run of the test block stopped after 30 steps (checkpoint and probes
+//! in dir/out); returns the case file.
+fs::path stoppedRun( const fs::path& dir )
+{
+    fs::remove_all( dir );
+    fs::create_directories( dir );
+    const fs::path file =
+        mpm_test::writeCase( dir, mpm_test::blockCaseText( "", R"(
+[[stages]]
+name = "load"
+type = "dynamic"
+duration_s = 0.2
+snapshot_interval_s = 0.02
+[probes]
+interval_s = 0.01
+points = [ { name = "top", position_m = [1.0, 1.9] } ]
+)" ) );
+    const auto stopped = runCommand( "run " + file.string() + " --out " +
+                                     ( dir / "out" ).string() +
+                                     " --backend serial --quiet "
+                                     "--stop-after-steps 30" );
+    EXPECT_EQ( stopped.exit_code, 130 ) << stopped.output;
+    return file;
+}
+
+int snapshotCount( const fs::path& h5 )
+{
+    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
+    if ( file < 0 )
+        return -1;
+    const hid_t group = H5Gopen2( file, "/snapshots", H5P_DEFAULT );
+    H5G_info_t info;
+    const herr_t status = H5Gget_info( group, &info );
+    H5Gclose( group );
+    H5Fclose( file );
+    return status < 0 ? -1 : static_cast<int>( info.nlinks );
+}
+
+//! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
+void expectDamageRefused( const std::string& name,
+                          const std::function<void( mpm::Checkpoint& )>& damage,
+                          const std::string& fragment )
+{
+    SCOPED_TRACE( name );
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / ( "rainslide_damaged_" + name );
+    const fs::path file = stoppedRun( dir );
+    const std::string checkpoint = ( dir / "out" / "checkpoint.h5" ).string();
+    mpm::Checkpoint c = mpm::readCheckpoint( checkpoint );
+    damage( c );
+    mpm::writeCheckpoint( checkpoint, c );
+    const auto result = runCommand( "run " + file.string() +
+                                    " --backend serial --quiet "
+                                    "--restart " +
+                                    checkpoint );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    EXPECT_NE( result.output.find( "is damaged: " + fragment ),
+               std::string::npos )
+        << result.output;
+}
+
+mpm::CheckpointArray& array( mpm::Checkpoint& c, const std::string& name )
+{
+    for ( auto& a : c.arrays )
+        if ( a.name == name )
+            return a;
+    throw std::runtime_error( "no array " + name );
+}
+
+//---------------------------------------------------------------------------//
+TEST( RestartDamaged, out_of_range_values_are_refused )
+{
+    expectDamageRefused(
+        "material",
+        []( mpm::Checkpoint& c )
+        { array( c, "particles/material_p" ).integers[3] = 7; },
+        "particles/material_p[3]: expected an index in 0..0, found 7" );
+    expectDamageRefused(
+        "position",
+        []( mpm::Checkpoint& c )
+        {
+            array( c, "particles/x_p" ).reals[5] =
+                std::numeric_limits<double>::quiet_NaN();
+        },
+        "particles/x_p[5]: expected a finite number" );
+    expectDamageRefused(
+        "time",
+        []( mpm::Checkpoint& c )
+        { c.time_s = std::numeric_limits<double>::quiet_NaN(); },
+        "time_s: expected a finite time >= 0 s" );
+    expectDamageRefused(
+        "snapshots", []( mpm::Checkpoint& c ) { c.snapshots.count = -3; },
+        "snapshot_count: expected >= 0, found -3" );
+}
+
+TEST( RestartDamaged, flipped_byte_in_a_dataset_is_refused )
+{
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / "rainslide_damaged_flip";
+    const fs::path file = stoppedRun( dir );
+    const fs::path checkpoint = dir / "out" / "checkpoint.h5";
+    // Where the positions' data lie in the file.
+    haddr_t address = 0;
+    {
+        const hid_t h5 =
+            H5Fopen( checkpoint.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
+        ASSERT_GE( h5, 0 );
+        const hid_t dset = H5Dopen2( h5, "/state/particles/x_p", H5P_DEFAULT );
+        ASSERT_GE( dset, 0 );
+        hsize_t offset[2];
+        unsigned filter_mask = 0;
+        hsize_t size = 0;
+        const hid_t space = H5Dget_space( dset );
+        const herr_t found = H5Dget_chunk_info( dset, space, 0, offset,
+                                                &filter_mask, &address, &size );
+        H5Sclose( space );
+        ASSERT_GE( found, 0 ) << "x_p is not chunked";
+        H5Dclose( dset );
+        H5Fclose( h5 );
+    }
+    {
+        std::fstream f( checkpoint,
+                        std::ios::in | std::ios::out | std::ios::binary );
+        f.seekg( static_cast<std::streamoff>( address + 100 ) );
+        char byte = 0;
+        f.read( &byte, 1 );
+        byte = static_cast<char>( byte ^ 0x10 );
+        f.seekp( static_cast<std::streamoff>( address + 100 ) );
+        f.write( &byte, 1 );
+    }
+    const auto result = runCommand( "run " + file.string() +
+                                    " --backend serial --quiet "
+                                    "--restart " +
+                                    checkpoint.string() );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    EXPECT_NE( result.output.find( "cannot read checkpoint" ),
+               std::string::npos )
+        << result.output;
+}
+
+TEST( RestartDamaged, malformed_probes_file_keeps_the_particles )
+{
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / "rainslide_damaged_probes";
+    const fs::path file = stoppedRun( dir );
+    const fs::path out = dir / "out";
+    const fs::path h5 = fs::exists( out / "particles.h5" )
+                            ? out / "particles.h5"
+                            : out / "particles.h5.partial";
+    const int before = snapshotCount( h5 );
+    ASSERT_GT( before, 0 );
+    const fs::path csv = fs::exists( out / "probes.csv" )
+                             ? out / "probes.csv"
+                             : out / "probes.csv.partial";
+    std::ofstream( csv, std::ios::app ) << "garbage,load,top\n";
+    const auto result = runCommand( "run " + file.string() +
+                                    " --backend serial --quiet --restart " +
+                                    ( out / "checkpoint.h5" ).string() );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    EXPECT_NE( result.output.find( "expected the time in s as the first "
+                                   "column, found 'garbage'" ),
+               std::string::npos )
+        << result.output;
+    EXPECT_EQ( snapshotCount( h5 ), before );
+}
+
+} // namespace
