@@ -4,6 +4,8 @@
 // Helpers of the tests that run the rainslide binary (RAINSLIDE_BINARY).
 #include <sys/wait.h>
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +32,24 @@ inline CommandResult runRainslide( const std::string& args,
     std::stringstream text;
     text << in.rdbuf();
     return { WEXITSTATUS( status ), text.str() };
+}
+
+//! runRainslide with its log in the test temporary folder.
+inline CommandResult runLogged( const std::string& args,
+                                const std::string& log_name )
+{
+    return runRainslide( args, std::filesystem::path( ::testing::TempDir() ) /
+                                   log_name );
+}
+
+//! An empty folder rainslide_<name> in the test temporary folder.
+inline std::filesystem::path freshTempDir( const std::string& name )
+{
+    const std::filesystem::path dir =
+        std::filesystem::path( ::testing::TempDir() ) / ( "rainslide_" + name );
+    std::filesystem::remove_all( dir );
+    std::filesystem::create_directories( dir );
+    return dir;
 }
 
 //! Writes `text` to dir/case.toml and returns its path.
@@ -71,6 +91,22 @@ condition = "fixed"
 [solver]
 )" + solver_extra +
            "\n" + stages;
+}
+
+//! The test block with one dynamic stage of `duration_s` (snapshots every
+//! 0.02 s) and a probe near its top sampled every 0.01 s.
+inline std::string probedBlockCaseText( const std::string& duration_s )
+{
+    return blockCaseText( "", R"(
+[[stages]]
+name = "load"
+type = "dynamic"
+duration_s = )" + duration_s + R"(
+snapshot_interval_s = 0.02
+[probes]
+interval_s = 0.01
+points = [ { name = "top", position_m = [1.0, 1.9] } ]
+)" );
 }
 
 } // namespace mpm_test

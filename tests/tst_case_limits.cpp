@@ -41,16 +41,16 @@ type = "quasi_static"
 duration_s = 2.0
 )";
 
-//! The error text of a case (fails the test if the case is accepted), and
+//! The error text of `read` (fails the test if it accepts the case), and
 //! its time in seconds.
-std::string errorsOf( const std::string& text, double& seconds,
-                      const std::string& file = "x.toml" )
+template <class Read>
+std::string errorsOfRead( const Read& read, double& seconds )
 {
     const auto start = std::chrono::steady_clock::now();
     std::string message;
     try
     {
-        mpm::parseCase( text, file );
+        read();
         ADD_FAILURE() << "accepted the case";
     }
     catch ( const mpm::CaseError& e )
@@ -63,23 +63,17 @@ std::string errorsOf( const std::string& text, double& seconds,
     return message;
 }
 
+//! The error text of a case text, and its time in seconds.
+std::string errorsOf( const std::string& text, double& seconds,
+                      const std::string& file = "x.toml" )
+{
+    return errorsOfRead( [&] { mpm::parseCase( text, file ); }, seconds );
+}
+
+//! The error text of a case file, and its time in seconds.
 std::string errorsOfFile( const fs::path& file, double& seconds )
 {
-    const auto start = std::chrono::steady_clock::now();
-    std::string message;
-    try
-    {
-        mpm::readCaseFile( file.string() );
-        ADD_FAILURE() << "accepted the case";
-    }
-    catch ( const mpm::CaseError& e )
-    {
-        message = e.what();
-    }
-    seconds = std::chrono::duration<double>( std::chrono::steady_clock::now() -
-                                             start )
-                  .count();
-    return message;
+    return errorsOfRead( [&] { mpm::readCaseFile( file.string() ); }, seconds );
 }
 
 fs::path freshDir( const std::string& name )

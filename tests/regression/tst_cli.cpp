@@ -1,7 +1,6 @@
 // End-to-end tests of the rainslide CLI: exit codes, messages, output files.
 #include <mpm_test_cli.hpp>
-
-#include <hdf5.h>
+#include <mpm_test_hdf5.hpp>
 
 #include <gtest/gtest.h>
 
@@ -23,17 +22,7 @@ using mpm_test::writeCase;
 
 CommandResult runCommand( const std::string& args )
 {
-    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
-                                             "rainslide_cli.log" );
-}
-
-fs::path freshDir( const std::string& name )
-{
-    const fs::path dir =
-        fs::path( ::testing::TempDir() ) / ( "rainslide_" + name );
-    fs::remove_all( dir );
-    fs::create_directories( dir );
-    return dir;
+    return mpm_test::runLogged( args, "rainslide_cli.log" );
 }
 
 //! The test block (mpm_test::blockCaseText) with one dynamic stage of 0.2 s;
@@ -50,30 +39,17 @@ snapshot_interval_s = 0.05
 )" + stage_extra );
 }
 
-int countSnapshots( const fs::path& h5 )
-{
-    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
-    if ( file < 0 )
-        return -1;
-    const hid_t group = H5Gopen2( file, "/snapshots", H5P_DEFAULT );
-    H5G_info_t info;
-    const herr_t status = H5Gget_info( group, &info );
-    H5Gclose( group );
-    H5Fclose( file );
-    return status < 0 ? -1 : static_cast<int>( info.nlinks );
-}
-
 //---------------------------------------------------------------------------//
 TEST( Cli, run_writes_hdf5_xdmf_and_metrics )
 {
-    const fs::path dir = freshDir( "run" );
+    const fs::path dir = mpm_test::freshTempDir( "run" );
     const fs::path file = writeCase( dir, blockCase( "", "" ) );
     const auto result =
         runCommand( "run " + file.string() + " --out " +
                     ( dir / "out" ).string() + " --backend serial" );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     EXPECT_NE( result.output.find( "MP-updates/s" ), std::string::npos );
-    EXPECT_EQ( countSnapshots( dir / "out" / "particles.h5" ), 4 );
+    EXPECT_EQ( mpm_test::snapshotCount( dir / "out" / "particles.h5" ), 4 );
     EXPECT_TRUE( fs::exists( dir / "out" / "particles.xdmf" ) );
     EXPECT_FALSE( fs::exists( dir / "out" / "particles.h5.partial" ) );
     std::ifstream in( dir / "out" / "metrics.json" );
@@ -87,7 +63,7 @@ TEST( Cli, run_writes_hdf5_xdmf_and_metrics )
 
 TEST( Cli, bad_case_is_rejected_and_nothing_is_written )
 {
-    const fs::path dir = freshDir( "bad" );
+    const fs::path dir = mpm_test::freshTempDir( "bad" );
     std::string text = blockCase( "", "" );
     text = std::regex_replace( text, std::regex( "poisson_ratio = 0.3" ),
                                "poisson_ratio = 0.7" );
@@ -117,7 +93,7 @@ TEST( Cli, check_accepts_the_shipped_cases )
 
 TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
 {
-    const fs::path dir = freshDir( "dt" );
+    const fs::path dir = mpm_test::freshTempDir( "dt" );
     const fs::path file = writeCase( dir, blockCase( "dt_s = 0.01", "" ) );
     const auto result =
         runCommand( "run " + file.string() + " --out " +
@@ -131,7 +107,7 @@ TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
 
 TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )
 {
-    const fs::path dir = freshDir( "unstable" );
+    const fs::path dir = mpm_test::freshTempDir( "unstable" );
     // Any speed above 1e-6 x the wave speed counts as unstable here.
     const fs::path file =
         writeCase( dir, blockCase( "instability_speed_factor = 1.0e-6", "" ) );
@@ -145,14 +121,14 @@ TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )
             << fragment << "\n"
             << result.output;
     // The snapshot at the failure was written and the file is readable.
-    EXPECT_EQ( countSnapshots( dir / "out" / "particles.h5" ), 1 );
+    EXPECT_EQ( mpm_test::snapshotCount( dir / "out" / "particles.h5" ), 1 );
     std::ifstream in( dir / "out" / "metrics.json" );
     EXPECT_EQ( nlohmann::json::parse( in )["status"], "unstable" );
 }
 
 TEST( Cli, point_leaving_the_grid_is_an_error_or_removed )
 {
-    const fs::path dir = freshDir( "leave" );
+    const fs::path dir = mpm_test::freshTempDir( "leave" );
     // Sideways gravity pushes the block out through the open right side.
     const std::string stage = "gravity_m_per_s2 = [400.0, 0.0]\n";
     std::string text = blockCase( "", "" );
@@ -190,7 +166,7 @@ TEST( Cli, point_leaving_the_grid_is_an_error_or_removed )
 // The total-stress slope (the paper's Fig. 10) runs to completion.
 TEST( Cli, total_stress_slope_runs_to_completion )
 {
-    const fs::path dir = freshDir( "slope_total_stress" );
+    const fs::path dir = mpm_test::freshTempDir( "slope_total_stress" );
     const auto result = runCommand( "run " RAINSLIDE_CASES_DIR
                                     "/slope_total_stress.toml --quiet --out " +
                                     ( dir / "out" ).string() );
@@ -211,7 +187,7 @@ TEST( Cli, total_stress_slope_runs_to_completion )
 // has no buoyant weight to put on the water.
 TEST( Cli, two_phase_run_reports_pore_pressure_extremes )
 {
-    const fs::path dir = freshDir( "pore_pressure" );
+    const fs::path dir = mpm_test::freshTempDir( "pore_pressure" );
     const fs::path file = writeCase( dir, R"(
 [case]
 name = "hydrostatic_column"

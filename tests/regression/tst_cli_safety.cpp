@@ -20,17 +20,12 @@ using mpm_test::writeCase;
 
 CommandResult runCommand( const std::string& args )
 {
-    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
-                                             "rainslide_cli_safety.log" );
+    return mpm_test::runLogged( args, "rainslide_cli_safety.log" );
 }
 
 fs::path freshDir( const std::string& name )
 {
-    const fs::path dir =
-        fs::path( ::testing::TempDir() ) / ( "rainslide_safety_" + name );
-    fs::remove_all( dir );
-    fs::create_directories( dir );
-    return dir;
+    return mpm_test::freshTempDir( "safety_" + name );
 }
 
 //! The test block with one dynamic stage; `stage_extra` is appended to it.

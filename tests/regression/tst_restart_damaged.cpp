@@ -3,6 +3,7 @@
 // exit 2 before anything is written (once a SIGSEGV in G2P, a run reading
 // out of bounds to "completed", or particles.h5 cut to the kept snapshots).
 #include <mpm_test_cli.hpp>
+#include <mpm_test_hdf5.hpp>
 
 #include <io/mpm_checkpoint.hpp>
 
@@ -25,8 +26,7 @@ using mpm_test::CommandResult;
 
 CommandResult runCommand( const std::string& args )
 {
-    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
-                                             "rainslide_damaged.log" );
+    return mpm_test::runLogged( args, "rainslide_damaged.log" );
 }
 
 //! A run of the test block stopped after 30 steps (checkpoint and probes
@@ -36,35 +36,13 @@ fs::path stoppedRun( const fs::path& dir )
     fs::remove_all( dir );
     fs::create_directories( dir );
     const fs::path file =
-        mpm_test::writeCase( dir, mpm_test::blockCaseText( "", R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = 0.2
-snapshot_interval_s = 0.02
-[probes]
-interval_s = 0.01
-points = [ { name = "top", position_m = [1.0, 1.9] } ]
-)" ) );
+        mpm_test::writeCase( dir, mpm_test::probedBlockCaseText( "0.2" ) );
     const auto stopped = runCommand( "run " + file.string() + " --out " +
                                      ( dir / "out" ).string() +
                                      " --backend serial --quiet "
                                      "--stop-after-steps 30" );
     EXPECT_EQ( stopped.exit_code, 130 ) << stopped.output;
     return file;
-}
-
-int snapshotCount( const fs::path& h5 )
-{
-    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
-    if ( file < 0 )
-        return -1;
-    const hid_t group = H5Gopen2( file, "/snapshots", H5P_DEFAULT );
-    H5G_info_t info;
-    const herr_t status = H5Gget_info( group, &info );
-    H5Gclose( group );
-    H5Fclose( file );
-    return status < 0 ? -1 : static_cast<int>( info.nlinks );
 }
 
 //! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
@@ -178,7 +156,7 @@ TEST( RestartDamaged, malformed_probes_file_keeps_the_particles )
     const fs::path h5 = fs::exists( out / "particles.h5" )
                             ? out / "particles.h5"
                             : out / "particles.h5.partial";
-    const int before = snapshotCount( h5 );
+    const int before = mpm_test::snapshotCount( h5 );
     ASSERT_GT( before, 0 );
     const fs::path csv = fs::exists( out / "probes.csv" )
                              ? out / "probes.csv"
@@ -192,7 +170,7 @@ TEST( RestartDamaged, malformed_probes_file_keeps_the_particles )
                                    "column, found 'garbage'" ),
                std::string::npos )
         << result.output;
-    EXPECT_EQ( snapshotCount( h5 ), before );
+    EXPECT_EQ( mpm_test::snapshotCount( h5 ), before );
 }
 
 } // namespace

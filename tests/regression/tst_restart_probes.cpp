@@ -18,8 +18,7 @@ namespace fs = std::filesystem;
 
 mpm_test::CommandResult runCommand( const std::string& args )
 {
-    return mpm_test::runRainslide( args, fs::path( ::testing::TempDir() ) /
-                                             "rainslide_restart_probes.log" );
+    return mpm_test::runLogged( args, "rainslide_restart_probes.log" );
 }
 
 //! The time column of every row of a probes.csv.
@@ -36,23 +35,11 @@ std::vector<std::string> sampleTimes( const fs::path& csv )
 
 TEST( RestartProbes, every_stop_keeps_every_sample )
 {
-    const fs::path dir =
-        fs::path( ::testing::TempDir() ) / "rainslide_restart_probes";
-    fs::remove_all( dir );
-    fs::create_directories( dir );
+    const fs::path dir = mpm_test::freshTempDir( "restart_probes" );
     // Snapshots every 0.02 s land steps on multiples of the 0.01 s probe
     // interval, up to round-off: checkpoints fall just below due times.
     const fs::path file =
-        mpm_test::writeCase( dir, mpm_test::blockCaseText( "", R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = 0.1
-snapshot_interval_s = 0.02
-[probes]
-interval_s = 0.01
-points = [ { name = "top", position_m = [1.0, 1.9] } ]
-)" ) );
+        mpm_test::writeCase( dir, mpm_test::probedBlockCaseText( "0.1" ) );
     const std::string run =
         "run " + file.string() + " --backend serial --quiet --out ";
     ASSERT_EQ( runCommand( run + ( dir / "full" ).string() ).exit_code, 0 );
