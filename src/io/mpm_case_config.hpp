@@ -289,6 +289,9 @@ struct SolverConfig
     //! ... with a pressure varying linearly across the cell, its slope
     //! limited from the neighbours' (physics::limitedPressureSlope).
     bool cell_pressure_slope = true;
+    //! Unsaturated: van Genuchten laws evaluated from a table
+    //! (physics::RetentionTable: <= 1.2e-7 relative), not exactly.
+    bool retention_table = true;
     //! Remove points that leave the grid (counted) instead of stopping.
     bool remove_points_leaving_grid = false;
     //! A speed above this factor times the largest wave speed is unstable.

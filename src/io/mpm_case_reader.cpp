@@ -310,9 +310,10 @@ class CaseParser
         TableReader r( *t, "solver", _diag );
         r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
                        "base_cell_completion", "cell_equilibrium",
-                       "cell_pressure_slope", "water_relative_flip",
-                       "remove_points_leaving_grid", "instability_speed_factor",
-                       "inertia_scaling", "checkpoint_interval_s" },
+                       "cell_pressure_slope", "retention_table",
+                       "water_relative_flip", "remove_points_leaving_grid",
+                       "instability_speed_factor", "inertia_scaling",
+                       "checkpoint_interval_s" },
                      "[solver]" );
         SolverConfig& s = _config.solver;
         s.courant_number = r.number( "courant_number",
@@ -335,6 +336,8 @@ class CaseParser
         s.cell_pressure_slope =
             r.boolean( "cell_pressure_slope", Need::Optional )
                 .value_or( s.cell_pressure_slope );
+        s.retention_table = r.boolean( "retention_table", Need::Optional )
+                                .value_or( s.retention_table );
         s.base_cell_completion =
             r.boolean( "base_cell_completion", Need::Optional )
                 .value_or( s.base_cell_completion );

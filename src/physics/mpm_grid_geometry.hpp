@@ -42,9 +42,10 @@ struct GridGeometry
       contains (x, y). Node k = a + 2 b is node (ci + a, cj + b).
       The caller guarantees the point lies in the grid.
     */
-    KOKKOS_INLINE_FUNCTION void weights( const double x, const double y,
-                                         int& ci, int& cj, double w[4],
-                                         double dwdx[4], double dwdy[4] ) const
+    KOKKOS_FORCEINLINE_FUNCTION void weights( const double x, const double y,
+                                              int& ci, int& cj, double w[4],
+                                              double dwdx[4],
+                                              double dwdy[4] ) const
     {
         const double inv_h = 1.0 / h; // one division instead of four
         const double gx = ( x - x0 ) * inv_h;

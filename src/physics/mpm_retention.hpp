@@ -2,6 +2,7 @@
 #define MPM_RETENTION_HPP
 
 #include <physics/mpm_retention_params.hpp>
+#include <physics/mpm_retention_table.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
@@ -45,7 +46,7 @@ struct Retention
         switch ( r.model )
         {
         case RetentionModel::VanGenuchten:
-            return vanGenuchten( r, p_w );
+            return r.table ? tabulated( r, p_w ) : vanGenuchten( r, p_w );
         case RetentionModel::Liakopoulos:
             return liakopoulos( r, p_w );
         case RetentionModel::Gardner:
@@ -68,7 +69,16 @@ struct Retention
         switch ( r.model )
         {
         case RetentionModel::VanGenuchten:
-            return vanGenuchtenSaturation( r, p_w ).state;
+        {
+            double t;
+            const int i =
+                r.table ? RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t )
+                        : -1;
+            if ( i < 0 )
+                return vanGenuchtenSaturation( r, p_w ).state;
+            return SaturationState{ RetentionTable::value( r.table, i, 0, t ),
+                                    RetentionTable::value( r.table, i, 1, t ) };
+        }
         case RetentionModel::Liakopoulos:
             return liakopoulosSaturation( r, p_w ).state;
         case RetentionModel::Gardner:
@@ -97,6 +107,8 @@ struct Retention
         {
         case RetentionModel::VanGenuchten:
         {
+            if ( r.table )
+                return tabulated( r, p_w ).S;
             // Eq. 16a: S_e = (1 + (alpha s)^n)^-(1 - 1/n).
             const double x = r.alpha_per_pa * s;
             if ( !( x > 0.0 ) )
@@ -183,6 +195,24 @@ struct Retention
         const double t = -KE::expm1( -v.m * v.d );
         const double k_rel = KE::sqrt( v.s_e ) * t * t;
         return RetentionState{ v.state.S, v.state.dS_dp,
+                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+    }
+
+    /*!
+      \brief S, dS/dp_w and k_rel of a tabulated law (r.table,
+      RetentionTable) at p_w (Pa); the exact law outside the table.
+    */
+    KOKKOS_INLINE_FUNCTION RetentionState tabulated( const RetentionParams& r,
+                                                     const double p_w ) const
+    {
+        const double s = p_w < 0.0 ? -p_w : 0.0;
+        double t;
+        const int i = RetentionTable::interval( s, t );
+        if ( i < 0 )
+            return vanGenuchten( r, p_w );
+        const double k_rel = RetentionTable::value( r.table, i, 2, t );
+        return RetentionState{ RetentionTable::value( r.table, i, 0, t ),
+                               RetentionTable::value( r.table, i, 1, t ),
                                k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
     }
 

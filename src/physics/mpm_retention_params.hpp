@@ -32,6 +32,10 @@ struct RetentionParams
     //! Linear: S = s_sat - (s_sat - s_res) min(s / range, 1), s = -p_w
     double suction_range_pa = 1.0;
     double k_rel_min = 0.0; //!< floor on k_rel (Liakopoulos: e.g. 1e-4)
+    //! van Genuchten: the law tabulated (RetentionTable::size values),
+    //! nullptr: evaluated exactly. Owned by the simulation
+    //! (RetentionTables).
+    const double* table = nullptr;
 };
 
 } // namespace physics

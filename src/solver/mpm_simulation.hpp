@@ -18,6 +18,7 @@
 #include <mpm_velocity_gradient.hpp>
 #include <mpm_water_views.hpp>
 #include <setup/mpm_base_slivers.hpp>
+#include <setup/mpm_retention_tables.hpp>
 #include <solver/mpm_diagnosis.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_setup.hpp>
@@ -120,6 +121,8 @@ class Simulation
     {
         stateChanged();
         materials = makeMaterialTable( stage.materials );
+        if ( analysis == AnalysisType::Unsaturated && solver.retention_table )
+            _retention_tables.attach( materials );
         std::vector<int> flags = nodeFlags( grid_config, stage.boundaries );
         std::vector<int> water_flags;
         if ( twoPhase() )
@@ -388,6 +391,8 @@ class Simulation
         Kokkos::deep_copy( view, flags_h );
     }
 
+    //! The tabulated retention laws of `materials` (solver.retention_table).
+    RetentionTables<ExecSpace> _retention_tables;
     // Grid sums kept between steps (empty if the scene does not need them).
     DryNodeSums<ExecSpace> _dry_sums;
     MomentumSums<ExecSpace> _dry_momentum;
