@@ -185,6 +185,72 @@ TEST( TensionCutoff, associated_return_is_the_closest_point )
                  worst );
 }
 
+// The return is the only solution: of the nine sets of planes that can be
+// active together (MC main plane and edges, and the six with the tension
+// plane), exactly one gives a stress meeting every condition (order,
+// f_mc <= 0, f_t <= 0, multipliers >= 0), and it is the one returned.
+TEST( TensionCutoff, exactly_one_active_set_satisfies_the_conditions )
+{
+    namespace Impl = mpm::physics::Impl;
+    const Impl::YieldPlane sets[9][3] = { { { 0, 2 } },
+                                          { { 0, 2 }, { 0, 1 } },
+                                          { { 0, 2 }, { 1, 2 } },
+                                          { { 0, -1 } },
+                                          { { 0, -1 }, { 1, -1 } },
+                                          { { 0, -1 }, { 1, -1 }, { 2, -1 } },
+                                          { { 0, 2 }, { 0, -1 } },
+                                          { { 0, 2 }, { 0, 1 }, { 0, -1 } },
+                                          { { 0, 2 }, { 0, -1 }, { 1, -1 } } };
+    const int sizes[9] = { 1, 2, 2, 1, 2, 3, 2, 3, 3 };
+    std::mt19937 gen( 3 );
+    std::uniform_real_distribution<double> normal( -60.0e3, 40.0e3 );
+    std::uniform_real_distribution<double> shear( -30.0e3, 30.0e3 );
+    std::uniform_real_distribution<double> strain( 0.0, 0.045 );
+    int plastic = 0;
+    for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
+        for ( const double sigma_t0 : { 0.0, 4.0e3, 12.0e3 } )
+            for ( const double h : { 0.0, -250.0e3 } )
+            {
+                const auto m = tensionTestParams( psi_deg, sigma_t0, h );
+                for ( int n = 0; n < 3000; ++n )
+                {
+                    double s[4] = { normal( gen ), normal( gen ), shear( gen ),
+                                    normal( gen ) };
+                    const auto p_tr = Impl::principalStress( s );
+                    double eps = strain( gen );
+                    const double eps_n = eps,
+                                 c_n = mpm_test::cohesionRef( m, eps );
+                    const auto region = MohrCoulomb{}.returnMap( m, s, eps );
+                    if ( region == ReturnRegion::Elastic )
+                        continue;
+                    ++plastic;
+                    const double scale = std::fabs( p_tr.sigma[0] ) +
+                                         std::fabs( p_tr.sigma[1] ) +
+                                         std::fabs( p_tr.sigma[2] ) + c_n;
+                    const auto p = principal( s );
+                    int valid = 0;
+                    for ( int k = 0; k < 9; ++k )
+                    {
+                        const auto r_k =
+                            static_cast<ReturnRegion>( k < 3 ? k + 1 : k + 2 );
+                        double s_k[3], dgamma[3], eps_k;
+                        Impl::planeReturn( m, sizes[k], sets[k], p_tr.sigma,
+                                           eps_n, s_k, eps_k, dgamma );
+                        if ( Impl::violation( m, r_k, sizes[k], s_k, dgamma,
+                                              eps_k ) > 1e-12 * scale )
+                            continue;
+                        ++valid;
+                        EXPECT_EQ( region, r_k );
+                        for ( int i = 0; i < 3; ++i )
+                            EXPECT_NEAR( p[i], s_k[i], 1e-12 * scale );
+                        EXPECT_NEAR( eps, eps_k, 1e-12 * eps );
+                    }
+                    ASSERT_EQ( valid, 1 ) << "region " << int( region );
+                }
+            }
+    EXPECT_GT( plastic, 40000 );
+}
+
 // Plane-strain uniaxial extension (de_xx only) from zero stress: elastic up
 // to s_xx = sigma_t0, then the tension plane with s_xx = sigma_t(eps_p_bar)
 // and no plastic strain in yy, zz, so eps_p_bar = 2/3 eps_p_xx. Without
