@@ -2,6 +2,8 @@
 #include <physics/mpm_material_params.hpp>
 #include <physics/mpm_mohr_coulomb.hpp>
 
+#include <mpm_test_principal.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +18,10 @@ using mpm::physics::MaterialParams;
 using mpm::physics::MohrCoulomb;
 using mpm::physics::ReturnRegion;
 using mpm::physics::yieldFunction;
+using mpm_test::cohesionRef;
+using mpm_test::plasticStrain;
+using mpm_test::principal;
+using mpm_test::shearInvariant;
 
 const double pi = std::acos( -1.0 );
 
@@ -38,24 +44,8 @@ double epsResidual( const MaterialParams& m )
     return ( m.cohesion_residual - m.cohesion_peak ) / m.softening_modulus;
 }
 
-// Principal values, descending, of a tensor {xx, yy, xy, zz} (independent of
-// the implementation under test).
-std::array<double, 3> principal( const double t[4] )
-{
-    const double center = 0.5 * ( t[0] + t[1] );
-    const double radius = std::hypot( 0.5 * ( t[0] - t[1] ), t[2] );
-    std::array<double, 3> v = { center + radius, center - radius, t[3] };
-    std::sort( v.begin(), v.end(), []( double a, double b ) { return a > b; } );
-    return v;
-}
-
-// Eq. 14-15 cohesion and the MC yield function written out here.
-double cohesionRef( const MaterialParams& m, const double eps )
-{
-    return std::max( m.cohesion_peak + m.softening_modulus * eps,
-                     m.cohesion_residual );
-}
-// f and its scale 2c cos(phi) + |s1 + s3| sin(phi) + |s1 - s3|.
+// The MC yield function written out here: f and its scale
+// 2c cos(phi) + |s1 + s3| sin(phi) + |s1 - s3|.
 double yieldRef( const MaterialParams& m, const double s[4], const double eps,
                  double* scale = nullptr )
 {
@@ -78,31 +68,6 @@ const double left_tr[4] = { -20.0e3, -160.0e3, 0.0, -25.0e3 };
 const double apex_tr[4] = { 30.0e3, 20.0e3, 4.0e3, 25.0e3 };
 const ReturnRegion expected[3] = {
     ReturnRegion::MainPlane, ReturnRegion::RightEdge, ReturnRegion::LeftEdge };
-
-// Strain C : (s_a - s_b) as {xx, yy, xy (tensor), zz}; with (s_tr, s) it is
-// the plastic strain increment of a return.
-std::array<double, 4> plasticStrain( const MaterialParams& m,
-                                     const double s_tr[4], const double s[4] )
-{
-    double ds[4];
-    for ( int i = 0; i < 4; ++i )
-        ds[i] = s_tr[i] - s[i];
-    const double mean = ( ds[0] + ds[1] + ds[3] ) / 3.0;
-    const double g2 = 2.0 * m.shear_modulus, k3 = 3.0 * m.bulk_modulus;
-    return { ( ds[0] - mean ) / g2 + mean / k3,
-             ( ds[1] - mean ) / g2 + mean / k3, ds[2] / g2,
-             ( ds[3] - mean ) / g2 + mean / k3 };
-}
-
-// sqrt( 2/3 dev(e) : dev(e) ), the xy component counted twice.
-double shearInvariant( const std::array<double, 4>& e )
-{
-    const double mean = ( e[0] + e[1] + e[3] ) / 3.0;
-    const double dd = ( e[0] - mean ) * ( e[0] - mean ) +
-                      ( e[1] - mean ) * ( e[1] - mean ) +
-                      ( e[3] - mean ) * ( e[3] - mean ) + 2.0 * e[2] * e[2];
-    return std::sqrt( 2.0 / 3.0 * dd );
-}
 
 // Return from s_tr; checks shared by all plastic returns: f = 0, the eps_p_bar
 // increment equals sqrt(2/3 de_p : de_p) of de_p = C : (s_tr - s).

@@ -2,6 +2,7 @@
 #define MPM_CASE_CONFIG_HPP
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,8 @@ struct MaterialConfig
     double softening_modulus_pa = 0.0;
     double friction_angle_deg = 0.0;
     double dilation_angle_deg = 0.0;
+    //! Tension cut-off sigma_t0 (peak; softens with c), Pa; +infinity: none.
+    double tensile_strength_pa = std::numeric_limits<double>::infinity();
     // Two-phase scenes only (Saturated / Unsaturated).
     double solid_density_kg_per_m3 = 0.0; //!< grain density rho_s
     double porosity = 0.0;                //!< initial porosity n0

@@ -2,6 +2,7 @@
 #include <io/mpm_case_retention.hpp>
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,8 @@ const std::array<ParamSpec, NumMaterialParams>& paramSpecs()
           "degrees", true, any, true, &MaterialConfig::friction_angle_deg },
         { "dilation_angle_deg", Range::interval( 0.0, false, 90.0, true ),
           "degrees", true, any, false, &MaterialConfig::dilation_angle_deg },
+        { "tensile_strength_pa", Range::atLeast( 0.0 ), "Pa", true, any, false,
+          &MaterialConfig::tensile_strength_pa },
         { "solid_density_kg_per_m3", Range::above( 0.0 ), "kg/m^3", false,
           Phase::TwoPhaseOnly, true, &MaterialConfig::solid_density_kg_per_m3 },
         { "porosity", Range::interval( 0.0, true, 1.0, true ), "", false,
@@ -160,6 +163,47 @@ void checkOrdered( const MaterialDraft& draft, const MaterialConfig& m,
                            lo->path + "), found " + formatNumber( hi_value ) );
 }
 
+//---------------------------------------------------------------------------//
+// Check the tension cut-off against the apex of the Mohr-Coulomb surface,
+// sigma_t0 <= c0 cot(phi), and report it on the key given in this table.
+void checkTensileStrength( const MaterialDraft& draft, const MaterialConfig& m,
+                           Diagnostics& diag )
+{
+    const auto& tensile = draft.params[ParamTensileStrength];
+    const auto& peak = draft.params[ParamCohesionPeak];
+    const auto& friction = draft.params[ParamFrictionAngle];
+    const double phi = m.friction_angle_deg * M_PI / 180.0;
+    const double apex = m.cohesion_peak_pa / std::tan( phi );
+    const double sigma_t = m.tensile_strength_pa;
+    if ( !tensile || !peak || !friction || sigma_t <= apex )
+        return;
+    const std::string of = " of material '" + m.name + "'";
+    if ( tensile->from_here )
+        diag.keyError( *tensile->node, tensile->path,
+                       "expected a number in [0, " + formatNumber( apex ) +
+                           "] Pa (at most the apex c0 cot(phi) = "
+                           "cohesion_peak_pa / tan(friction_angle_deg)" +
+                           of + "), found " + formatNumber( sigma_t ) );
+    else if ( peak->from_here )
+        diag.keyError( *peak->node, peak->path,
+                       "expected a number >= " +
+                           formatNumber( sigma_t * std::tan( phi ) ) +
+                           " Pa (so that the apex c0 cot(phi) is at least "
+                           "tensile_strength_pa" +
+                           of + ", given at " + tensile->path + "), found " +
+                           formatNumber( m.cohesion_peak_pa ) );
+    else if ( friction->from_here )
+        diag.keyError(
+            *friction->node, friction->path,
+            "expected a number in (0, " +
+                formatNumber( std::atan( m.cohesion_peak_pa / sigma_t ) *
+                              180.0 / M_PI ) +
+                "] degrees (so that the apex c0 cot(phi) is at least "
+                "tensile_strength_pa" +
+                of + ", given at " + tensile->path + "), found " +
+                formatNumber( m.friction_angle_deg ) );
+}
+
 } // namespace
 
 //---------------------------------------------------------------------------//
@@ -263,6 +307,7 @@ std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
         checkOrdered( draft, m, ParamCohesionResidual, ParamCohesionPeak,
                       diag );
         checkOrdered( draft, m, ParamDilationAngle, ParamFrictionAngle, diag );
+        checkTensileStrength( draft, m, diag );
     }
     return diag.count() == errors_before ? std::optional<MaterialConfig>( m )
                                          : std::nullopt;

@@ -30,6 +30,7 @@ enum Param
     ParamSofteningModulus,
     ParamFrictionAngle,
     ParamDilationAngle,
+    ParamTensileStrength,
     ParamSolidDensity,
     ParamPorosity,
     ParamPermeability,
@@ -78,7 +79,8 @@ void readMaterialValues( TableReader& reader, MaterialDraft& draft,
 /*!
   \brief The material described by a draft, with defaults applied, after
   checking required keys (by model and analysis), keys only for
-  mohr_coulomb and residual <= peak, dilation <= friction; or nothing after
+  mohr_coulomb and residual <= peak, dilation <= friction, tensile strength
+  <= c0 cot(phi); or nothing after
   reporting errors to the reader.
 */
 std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,

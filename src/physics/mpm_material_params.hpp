@@ -6,6 +6,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace mpm
 {
@@ -38,6 +39,12 @@ struct MaterialParams
     double sin_phi = 0.0;           //!< sin(phi), cached for the kernels
     double cos_phi = 1.0;           //!< cos(phi)
     double sin_psi = 0.0;           //!< sin(psi)
+    //! Tension cut-off: peak tensile strength sigma_t0, Pa (+infinity: none),
+    //! softened with the cohesion, sigma_t = sigma_t0 c / c0 (set with
+    //! setTensileStrength after the cohesion and the angles).
+    double tensile_strength = std::numeric_limits<double>::infinity();
+    double tensile_ratio = 0.0;  //!< sigma_t0 / c0, so sigma_t = ratio * c
+    bool tension_cutoff = false; //!< sigma_t0 < c0 cot(phi): cut-off active
     // Two-phase scenes only.
     double permeability = 0.0; //!< intrinsic permeability k, m^2
     RetentionParams retention; //!< S(p_w), k_rel(S)
@@ -50,6 +57,21 @@ struct MaterialParams
         sin_phi = std::sin( phi );
         cos_phi = std::cos( phi );
         sin_psi = std::sin( psi );
+    }
+
+    //! Tension cut-off sigma_t0 (Pa, +infinity: none). One at or above the
+    //! apex c0 cot(phi) never acts, nor one within 1e-9 of it (a sliver):
+    //! then the Mohr-Coulomb surface holds alone, as without a cut-off.
+    void setTensileStrength( const double sigma_t0 )
+    {
+        tensile_strength = sigma_t0;
+        const double apex = sin_phi > 0.0
+                                ? cohesion_peak * cos_phi / sin_phi
+                                : std::numeric_limits<double>::infinity();
+        tension_cutoff = std::isfinite( sigma_t0 ) && sigma_t0 >= 0.0 &&
+                         cohesion_peak > 0.0 &&
+                         sigma_t0 < apex * ( 1.0 - 1e-9 );
+        tensile_ratio = tension_cutoff ? sigma_t0 / cohesion_peak : 0.0;
     }
 
     //! Constrained (P-wave) modulus E_c = K + 4/3 G, Pa.

@@ -61,6 +61,7 @@ makeMaterialTable( const std::vector<MaterialConfig>& materials )
         params.softening_modulus = m.softening_modulus_pa;
         params.setAngles( m.friction_angle_deg * deg,
                           m.dilation_angle_deg * deg );
+        params.setTensileStrength( m.tensile_strength_pa );
         params.permeability = m.permeability_m2;
         params.retention = retentionParams( m.retention );
         table.materials[table.size++] = params;
