@@ -1,4 +1,5 @@
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_minimal_case.hpp>
 #include <setup/mpm_geometry.hpp>
 
 #include <gtest/gtest.h>
@@ -335,29 +336,7 @@ TEST( CaseReader, reads_good_two_phase_case )
 }
 
 //---------------------------------------------------------------------------//
-const char* minimal_case = R"(
-[case]
-name = "minimal"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 1.0
-cells = [10, 10]
-[[materials]]
-name = "soil"
-model = "mohr_coulomb"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-cohesion_peak_pa = 10.0e3
-friction_angle_deg = 30.0
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]
-[[stages]]
-name = "settle"
-type = "quasi_static"
-duration_s = 2.0
-)";
+using mpm_test::minimal_case;
 
 TEST( CaseReader, defaults_of_a_minimal_case )
 {
