@@ -30,6 +30,8 @@ struct StageSummary
     std::string type;
     long steps = 0;
     double duration_s = 0.0;
+    //! Smallest and largest step the stability rule chose (steps cut short
+    //! to land on a snapshot time or the stage end not counted), s.
     double dt_min_s = 0.0;
     double dt_max_s = 0.0;
     //! Quasi-static: final E_kin / max E_kin, and whether it met the tolerance.

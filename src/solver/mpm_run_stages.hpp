@@ -256,10 +256,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 observer.onCheckpoint( checkpoint );
             }
             const WaveSpeedLimit limit = sim.waveSpeedLimit();
-            double dt = chooseTimeStep( sim.solver, limit );
+            const double dt_stable = chooseTimeStep( sim.solver, limit );
             // Land exactly on the stage end and on snapshot times.
-            dt = std::min( dt,
-                           std::min( stage.duration_s, state.next_snapshot_s ) -
+            const double dt = std::min(
+                dt_stable, std::min( stage.duration_s, state.next_snapshot_s ) -
                                progress.stage_time_s );
             sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
@@ -271,8 +271,13 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             progress.dt_s = dt;
             progress.kinetic_energy_j = sim.kineticEnergy();
             progress.active_points = sim.numActivePoints();
-            stage_summary.dt_min_s = std::min( stage_summary.dt_min_s, dt );
-            stage_summary.dt_max_s = std::max( stage_summary.dt_max_s, dt );
+            // The steps the stability rule chose: a step cut short to land
+            // on a snapshot time is not a smaller stable step (the base
+            // slope reported 1.1e-6 s that way against 2.6e-4 s chosen).
+            stage_summary.dt_min_s =
+                std::min( stage_summary.dt_min_s, dt_stable );
+            stage_summary.dt_max_s =
+                std::max( stage_summary.dt_max_s, dt_stable );
             const double max_speed = sim.maxPointSpeed();
             stage_summary.max_speed_m_per_s =
                 std::max( stage_summary.max_speed_m_per_s, max_speed );

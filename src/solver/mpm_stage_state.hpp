@@ -14,7 +14,10 @@ struct RunSummary
 {
     std::vector<StageSummary> stages;
     long steps = 0;
-    double dt_min_s = 1.0e300; //!< smallest step (1e300 before the first)
+    //! Smallest and largest step the stability rule chose (not the steps
+    //! cut short to land on a snapshot time or the stage end); 1e300 and 0
+    //! before the first step.
+    double dt_min_s = 1.0e300;
     double dt_max_s = 0.0;
     bool interrupted = false; //!< stopped by RunObserver::stopRequested
 };
