@@ -29,16 +29,11 @@ using mpm_test::plasticStrain;
 using mpm_test::principal;
 using mpm_test::shearInvariant;
 using mpm_test::tensileRef;
+using mpm_test::tensionTestParams;
 
 const double pi = std::acos( -1.0 );
 const double inf = std::numeric_limits<double>::infinity();
-constexpr int num_regions = 11;
-
-MaterialParams testParams( const double psi_deg = 10.0,
-                           const double sigma_t0 = 4.0e3 )
-{
-    return mpm_test::tensionTestParams( psi_deg, sigma_t0 );
-}
+using mpm_test::num_regions;
 
 // Yield functions of sorted principal stresses p: MC f_13 and tension
 // f_t = s1 - sigma_t, and a stress scale for the tolerances.
@@ -232,7 +227,7 @@ ReturnRegion checkedReturn( const MaterialParams& m, const double s_tr[4],
 
 TEST( TensionCutoff, cutoff_only_below_the_apex )
 {
-    auto m = testParams( 10.0, inf );
+    auto m = tensionTestParams( 10.0, inf );
     EXPECT_FALSE( m.tension_cutoff );
     m.setTensileStrength( 4.0e3 );
     EXPECT_TRUE( m.tension_cutoff );
@@ -250,10 +245,10 @@ TEST( TensionCutoff, cutoff_only_below_the_apex )
     EXPECT_FALSE( m.tension_cutoff );
 }
 
-// Without a cut-off (none, or at/above the apex) every return is bit for bit
-// that of a material whose tensile strength was never set, on the random
-// trials of tst_mohr_coulomb.cpp. (At the merge, 180,000 such trials were
-// also bit for bit those of the Mohr-Coulomb code before the cut-off.)
+// A cut-off at or above the apex returns bit for bit what no cut-off (the
+// default) returns, on the random trials of tst_mohr_coulomb.cpp, and never
+// a tension region. (At the merge, 180,000 such trials were also bit for
+// bit those of the Mohr-Coulomb code before the cut-off.)
 TEST( TensionCutoff, no_cutoff_is_bit_identical_to_mohr_coulomb_alone )
 {
     std::mt19937 gen( 20180801 );
@@ -261,16 +256,15 @@ TEST( TensionCutoff, no_cutoff_is_bit_identical_to_mohr_coulomb_alone )
     std::uniform_real_distribution<double> shear( -80.0e3, 80.0e3 );
     std::uniform_real_distribution<double> strain( 0.0, 0.045 );
     const double apex = 10.0e3 / std::tan( 30.0 * pi / 180.0 );
+    EXPECT_FALSE( MaterialParams{}.tension_cutoff ); // none by default
     int plastic = 0;
     for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
     {
-        auto plain = testParams( psi_deg, inf );
-        plain.tensile_strength = inf; // as MaterialParams holds it by default
-        plain.tensile_ratio = 0.0;
-        plain.tension_cutoff = false;
+        const auto plain = tensionTestParams( psi_deg, inf );
+        ASSERT_FALSE( plain.tension_cutoff );
         for ( const double sigma_t0 : { inf, apex, 2.0 * apex } )
         {
-            const auto m = testParams( psi_deg, sigma_t0 );
+            const auto m = tensionTestParams( psi_deg, sigma_t0 );
             ASSERT_FALSE( m.tension_cutoff );
             for ( int n = 0; n < 20000; ++n )
             {
@@ -308,7 +302,7 @@ TEST( TensionCutoff, random_trials_satisfy_consistency_in_every_region )
     for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
         for ( const double sigma_t0 : { 0.0, 4.0e3, 12.0e3 } )
         {
-            const auto m = testParams( psi_deg, sigma_t0 );
+            const auto m = tensionTestParams( psi_deg, sigma_t0 );
             ASSERT_TRUE( m.tension_cutoff );
             for ( int n = 0; n < 10000; ++n )
             {

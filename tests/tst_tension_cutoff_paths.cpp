@@ -25,7 +25,7 @@ using mpm_test::tensileRef;
 using mpm_test::tensionTestParams;
 using Vec = std::array<double, 3>;
 
-constexpr int num_regions = 11;
+using mpm_test::num_regions;
 
 // D x = lambda tr(x) 1 + 2G x and the energy x . C x (C = D^-1), principal.
 Vec elastic( const MaterialParams& m, const Vec& x )

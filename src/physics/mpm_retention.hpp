@@ -70,14 +70,11 @@ struct Retention
         {
         case RetentionModel::VanGenuchten:
         {
-            double t;
-            const int i =
-                r.table ? RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t )
-                        : -1;
-            if ( i < 0 )
+            if ( !r.table )
                 return vanGenuchtenSaturation( r, p_w ).state;
-            return SaturationState{ RetentionTable::value( r.table, i, 0, t ),
-                                    RetentionTable::value( r.table, i, 1, t ) };
+            // Inlined, the unused k_rel cubic is dropped.
+            const RetentionState state = tabulated( r, p_w );
+            return SaturationState{ state.S, state.dS_dp };
         }
         case RetentionModel::Liakopoulos:
             return liakopoulosSaturation( r, p_w ).state;
