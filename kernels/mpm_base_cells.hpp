@@ -20,17 +20,19 @@ struct BaseCellField
 {
     enum : int
     {
-        vol,        //!< sum V_p, m^3
-        vol_xi,     //!< sum V_p xi_p (local x in [0, 1])
-        vol_eta,    //!< sum V_p eta_p
-        vol_xi_eta, //!< sum V_p xi_p eta_p
-        mass,       //!< sum of the points' solid and water masses, kg
-        sigma_xx,   //!< sum V_p sigma'_p (effective, tension positive)
-        sigma_yy,   //!< ...
-        sigma_xy,   //!< ...
-        bishop,     //!< sum V_p S_p p_w,p
-        p_w,        //!< sum V_p p_w,p
-        S,          //!< sum V_p S_p
+        vol,         //!< sum V_p, m^3
+        vol_xi,      //!< sum V_p xi_p (local x in [0, 1])
+        vol_eta,     //!< sum V_p eta_p
+        vol_xi_eta,  //!< sum V_p xi_p eta_p
+        vol_xi_xi,   //!< sum V_p xi_p^2
+        vol_eta_eta, //!< sum V_p eta_p^2
+        mass,        //!< sum of the points' solid and water masses, kg
+        sigma_xx,    //!< sum V_p sigma'_p (effective, tension positive)
+        sigma_yy,    //!< ...
+        sigma_xy,    //!< ...
+        bishop,      //!< sum V_p S_p p_w,p
+        p_w,         //!< sum V_p p_w,p
+        S,           //!< sum V_p S_p
         count
     };
 };
@@ -167,10 +169,14 @@ struct BaseCellAccess
         using F = BaseCellField;
         const int c = ci * ny + cj;
         const auto cell = sums.access();
+        const double xi = w[1] + w[3];
+        const double eta = w[2] + w[3];
         cell.add( c, F::vol, vol );
-        cell.add( c, F::vol_xi, vol * ( w[1] + w[3] ) );
-        cell.add( c, F::vol_eta, vol * ( w[2] + w[3] ) );
+        cell.add( c, F::vol_xi, vol * xi );
+        cell.add( c, F::vol_eta, vol * eta );
         cell.add( c, F::vol_xi_eta, vol * w[3] );
+        cell.add( c, F::vol_xi_xi, vol * xi * xi );
+        cell.add( c, F::vol_eta_eta, vol * eta * eta );
         cell.add( c, F::mass, mass );
         cell.add( c, F::sigma_xx, vol * sigma[0] );
         cell.add( c, F::sigma_yy, vol * sigma[1] );
@@ -222,10 +228,12 @@ struct BaseCellAccess
 //---------------------------------------------------------------------------//
 /*!
   \brief Takes the base cells' sums of the step's P2G and sets their corner
-  forces (physics::BaseCellCompletion), with the empty part's weight under
-  gravity (gravity_x, gravity_y): the cell's mean density for the mixture,
-  water_density for the water (0 in a dry scene); a base cell without
-  points gets none.
+  forces (physics::BaseCellCompletion): the empty part holds its weight
+  under gravity (gravity_x, gravity_y), the cell's mean density for the
+  mixture, water_density for the water (0 in a dry scene), with the total
+  stress and p_w growing with depth from the soil's centre
+  (BaseCellCompletion::weightGradients); a base cell without points gets
+  none.
 */
 template <class ExecSpace>
 void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
@@ -270,13 +278,19 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
             const double p_w = s[F::p_w] * inv_vol;
             const double density = s[F::mass] * inv_vol;
             const double g[2] = { gravity_x, gravity_y };
+            const auto gradients =
+                completion.weightGradients( g, density, water_density, sigma );
             for ( int k = 0; k < 4; ++k )
             {
-                double D[2], f_m[2], f_w[2];
+                double D[2], E[2][2], f_m[2], f_w[2];
                 completion.missing( k, s[F::vol], s[F::vol_xi], s[F::vol_eta],
                                     D );
-                completion.mixtureForce( D, sigma, f_m );
-                completion.waterForce( D, p_w, f_w );
+                completion.missingMoments(
+                    k, s[F::vol], s[F::vol_xi], s[F::vol_eta], s[F::vol_xi_eta],
+                    s[F::vol_xi_xi], s[F::vol_eta_eta], E );
+                completion.mixtureForce( D, E, sigma, gradients.dsigma_dx,
+                                         gradients.dsigma_dy, f_m );
+                completion.waterForce( D, E, p_w, gradients.dp_w, f_w );
                 const double W =
                     completion.missingVolume( k, s[F::vol], s[F::vol_xi],
                                               s[F::vol_eta], s[F::vol_xi_eta] );

@@ -445,6 +445,53 @@ def crest_hydrostatic(run):
             "final": final, "largest_rms": worst}
 
 
+def pore_pressure_pulses(run, wave_speed):
+    """The largest p_w of each snapshot against hydrostatic plus Joukowsky.
+
+    The model has no gas phase (as the paper's): where the last unsaturated
+    pores at an impermeable base fill, the inflowing water stops within a step
+    and sends a water-hammer pulse of Joukowsky's pressure c rho_w n S |w|
+    (c the undrained wave speed, w = v_w - v_s). Per snapshot of the stage,
+    every point's p_w against rho_w g (y_top - y), y_top the highest point of
+    its 0.5 m column of soil, plus c times the largest seepage momentum of any
+    point in this and the previous snapshot. Returns the largest ratio and
+    where it was, or None for a dry run or without a wave speed.
+    """
+    if not run.two_phase or not wave_speed:
+        return None
+    worst, momentum_before = None, 0.0
+    for snap in run.stage_snapshots:
+        active = run.active(snap)
+        x = run.field(snap, "x")[active]
+        p = run.field(snap, "pore_pressure")[active]
+        w = run.field(snap, "water_velocity")[active] - run.field(snap, "velocity")[active]
+        momentum = 1000.0 * run.field(snap, "porosity")[active] * \
+            run.field(snap, "saturation")[active] * np.hypot(w[:, 0], w[:, 1])
+        recent = max(float(momentum.max()), momentum_before)
+        momentum_before = float(momentum.max())
+        column = np.floor(x[:, 0] / 0.5).astype(int)
+        column -= column.min()
+        top = np.full(column.max() + 1, -np.inf)
+        np.maximum.at(top, column, x[:, 1])
+        hydrostatic = RHO_W_G * (top[column] - x[:, 1])
+        joukowsky = wave_speed * recent
+        ratio = p / (hydrostatic + joukowsky)
+        k = int(np.argmax(ratio))
+        if worst is None or ratio[k] > worst["ratio"]:
+            worst = {"ratio": _json_num(float(ratio[k])), "time_s": _json_num(snap.t),
+                     "xy_m": [_json_num(v) for v in x[k]],
+                     "p_w_pa": _json_num(float(p[k])),
+                     "hydrostatic_pa": _json_num(float(hydrostatic[k])),
+                     "joukowsky_pa": _json_num(joukowsky)}
+    if worst is None:
+        return None
+    return {"definition": "largest p_w / (rho_w g (y_top - y) + c max rho_w n S |v_w - v_s|) "
+                          "over the points and snapshots of the stage; y_top the top of the "
+                          "point's 0.5 m column of soil, the momentum the largest of any point "
+                          "in the snapshot and the one before, c the undrained wave speed",
+            "wave_speed_m_per_s": _json_num(wave_speed), "largest": worst}
+
+
 def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
     """Failure metrics of run.stage (see the module docstring) as a JSON-ready dict.
 
@@ -467,6 +514,8 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
     else:
         toe, toe_source = float(toe_x), "given (--toe-x)"
     ref_ids, ref_x = run.reference_positions()
+    wave_speed = ((run.metrics or {}).get("time_step") or {}).get(
+        "final_max_wave_speed_m_per_s")
 
     series = {k: [] for k in ("time_s", "sliding_area_m2", "n_groups", "n_sliding_points",
                               "new_area_m2", "new_rate_m2_per_s", "max_x_sliding_m",
@@ -596,6 +645,7 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
         },
         "stage": run.stage,
         "crest_hydrostatic_error": crest_hydrostatic(run),
+        "pore_pressure_pulses": pore_pressure_pulses(run, wave_speed),
         "stage_start_time_s": _json_num(run.stage_start_s),
         "stage_start_source": run.stage_start_source,
         "snapshots_analysed": len(run.stage_snapshots),

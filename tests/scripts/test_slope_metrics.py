@@ -192,6 +192,29 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertAlmostEqual(r["stage_start_time_s"], 1.0)
         self.assertIn("end of stage 'gravity'", r["definition"]["reference_state"])
 
+    def test_pore_pressure_pulse_against_hydrostatic_plus_joukowsky(self):
+        make_run(self.dir)
+        with open(os.path.join(self.dir, "metrics.json")) as f:
+            metrics = json.load(f)
+        metrics["time_step"] = {"final_max_wave_speed_m_per_s": 1000.0}
+        with open(os.path.join(self.dir, "metrics.json"), "w") as f:
+            json.dump(metrics, f)
+        # A point that does not move, 4.5 m below the top of its column;
+        # saturated points seep at 0.04 m/s: momentum 1000 * 0.3 * 0.04.
+        hydrostatic, joukowsky = 9810.0 * 4.5, 1000.0 * 12.0
+        with h5py.File(os.path.join(self.dir, "particles.h5"), "r+") as f:
+            snap = f["snapshots"][sorted(f["snapshots"].keys())[-1]]
+            x = snap["x"][:]
+            k = int(np.argmin(np.hypot(x[:, 0] - 6.25, x[:, 1] - 0.24)))
+            p = snap["pore_pressure"][:]
+            p[k] = 2.0 * (hydrostatic + joukowsky)
+            snap["pore_pressure"][...] = p
+        pulses = self.analyse()["pore_pressure_pulses"]
+        self.assertAlmostEqual(pulses["largest"]["ratio"], 2.0, places=5)
+        self.assertAlmostEqual(pulses["largest"]["hydrostatic_pa"], hydrostatic, places=3)
+        self.assertAlmostEqual(pulses["largest"]["joukowsky_pa"], joukowsky, places=3)
+        self.assertEqual(pulses["largest"]["time_s"], 10.0)
+
     def test_single_stage_run_uses_x_minus_displacement(self):
         make_run(self.dir, two_stage=False, two_phase=False)
         r = self.analyse()
