@@ -41,13 +41,13 @@ namespace physics
   below them (1.4 kPa in a wetted column). (Gradients from the neighbour
   cells' means instead made the cut cells' forces depend on their own
   pressure 1.4 to 2 times as strongly: a saturated layer on a staircase
-  base went unstable at a Courant number of 0.9.) The empty part also weighs
-  what the cell's soil weighs per volume: W_k g with W_k = int_cell N_k - sum
-  V_p N_k(x_p) (virtual), so a pressure varying with depth is in equilibrium
-  there as in a full cell (without it the cut cells' pressures had to make up
-  the missing weight and, at different heights along a staircase base, pushed
-  the water sideways: a saturated layer on a 10-degree base circulated at 0.3
-  m/s).
+  base went unstable at a Courant number of 0.9.) Its weight is W_k g,
+  W_k = int_cell N_k - sum V_p N_k(x_p) (virtual) with the cell's density
+  per volume, so a pressure varying with depth is in equilibrium there as
+  in a full cell (without it the cut cells' pressures made up the missing
+  weight and, at different heights along a staircase base, pushed the
+  water sideways: a saturated layer on a 10-degree base circulated at
+  0.3 m/s).
 */
 struct BaseCellCompletion
 {
