@@ -3,7 +3,8 @@
 //                 [--restart CHECKPOINT] [--checkpoint-every-s S]
 //                 [--stop-after-steps N] [--quiet]
 //   rainslide check CASE
-//   (both: [--max-steps N] [--max-memory-gb X] [--max-output-gb X]
+//   (both: [--set KEY=VALUE]... overrides of the case's keys;
+//          [--max-steps N] [--max-memory-gb X] [--max-output-gb X]
 //          [--max-snapshots N], the budget of the run estimate)
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_output_folder.hpp>
@@ -21,6 +22,7 @@
 #include <iostream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace
 {
@@ -99,6 +101,18 @@ void addBudgetOptions( CLI::App& command, mpm::RunBudget& budget )
         ->check( CLI::NonNegativeNumber )
         ->capture_default_str();
 }
+
+//! The --set option of `check` and `run` (repeatable).
+void addOverrideOption( CLI::App& command, std::vector<std::string>& overrides )
+{
+    command
+        .add_option( "--set", overrides,
+                     "override a key of the case: KEY=VALUE with KEY as the "
+                     "case reader writes it and VALUE in TOML (e.g. --set "
+                     "solver.courant_number=0.5 --set stages[1].duration_s=10; "
+                     "strings quoted); repeatable, recorded in metrics.json" )
+        ->allow_extra_args( false );
+}
 } // namespace
 
 int main( int argc, char* argv[] )
@@ -115,6 +129,7 @@ int main( int argc, char* argv[] )
         std::max( 1, static_cast<int>( std::thread::hardware_concurrency() ) );
     bool quiet = false;
     mpm::RunBudget budget;
+    std::vector<std::string> overrides;
 
     CLI::App* run = app.add_subcommand( "run", "run a case" );
     run->add_option( "case", case_file, "case file (TOML)" )->required();
@@ -140,17 +155,19 @@ int main( int argc, char* argv[] )
                      "steps" )
         ->check( CLI::PositiveNumber );
     addBudgetOptions( *run, budget );
+    addOverrideOption( *run, overrides );
 
     CLI::App* check = app.add_subcommand( "check", "validate a case file" );
     check->add_option( "case", case_file, "case file (TOML)" )->required();
     addBudgetOptions( *check, budget );
+    addOverrideOption( *check, overrides );
 
     CLI11_PARSE( app, argc, argv );
 
     mpm::CaseConfig config;
     try
     {
-        config = mpm::readCaseFile( case_file );
+        config = mpm::readCaseFile( case_file, overrides );
     }
     catch ( const mpm::CaseError& error )
     {

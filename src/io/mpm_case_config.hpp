@@ -331,6 +331,8 @@ struct CaseConfig
     //! Canonical text of the case's keys (caseFingerprint); identifies the
     //! case of a checkpoint. Empty for cases built in code.
     std::string fingerprint;
+    //! `--set KEY=VALUE` overrides applied to the file (readCaseFile).
+    std::vector<std::string> overrides;
     std::string name;
     std::string description;
     AnalysisType analysis = AnalysisType::Dry;

@@ -5,6 +5,7 @@
 #include <io/mpm_case_include.hpp>
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_case_materials.hpp>
+#include <io/mpm_case_overrides.hpp>
 #include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_case_shapes.hpp>
@@ -534,7 +535,8 @@ class CaseParser
 
 //---------------------------------------------------------------------------//
 CaseConfig parseCase( const std::string& toml_text,
-                      const std::string& file_name )
+                      const std::string& file_name,
+                      const std::vector<std::string>& overrides )
 {
     toml::table root;
     Diagnostics prescan( file_name );
@@ -557,17 +559,21 @@ CaseConfig parseCase( const std::string& toml_text,
     config.file = file_name;
     Diagnostics diag( file_name );
     Impl::resolveIncludes( root, file_name, diag, toml_text.size() );
+    if ( diag.empty() )
+        Impl::applyOverrides( root, overrides, diag );
     if ( !diag.empty() ) // without an included file, the rest is noise
         throw CaseError( diag.report() );
     CaseParser( diag, config ).parse( root );
     if ( !diag.empty() )
         throw CaseError( diag.report() );
     config.fingerprint = caseFingerprint( root );
+    config.overrides = overrides;
     return config;
 }
 
 //---------------------------------------------------------------------------//
-CaseConfig readCaseFile( const std::string& path )
+CaseConfig readCaseFile( const std::string& path,
+                         const std::vector<std::string>& overrides )
 {
     std::string text;
     try
@@ -579,7 +585,7 @@ CaseConfig readCaseFile( const std::string& path )
         throw CaseError( path +
                          ": error: cannot open the case file: " + e.what() );
     }
-    return parseCase( text, path );
+    return parseCase( text, path, overrides );
 }
 
 } // namespace mpm

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -40,9 +41,13 @@ class CaseError : public std::runtime_error
 
   \param path Case file; it is also CaseConfig::file and the file name in
   error messages.
+  \param overrides `--set KEY=VALUE` texts applied to the case (includes
+  resolved) before it is checked (Impl::applyOverrides); kept in
+  CaseConfig::overrides.
   \throw CaseError if the file cannot be read or is invalid.
 */
-CaseConfig readCaseFile( const std::string& path );
+CaseConfig readCaseFile( const std::string& path,
+                         const std::vector<std::string>& overrides = {} );
 
 //---------------------------------------------------------------------------//
 /*!
@@ -50,10 +55,12 @@ CaseConfig readCaseFile( const std::string& path );
 
   \param toml_text The case file contents.
   \param file_name Name used in error messages and as CaseConfig::file.
+  \param overrides As for readCaseFile.
   \throw CaseError if the text is not valid TOML or not a valid case.
 */
 CaseConfig parseCase( const std::string& toml_text,
-                      const std::string& file_name );
+                      const std::string& file_name,
+                      const std::vector<std::string>& overrides = {} );
 
 } // namespace mpm
 

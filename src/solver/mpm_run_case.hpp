@@ -284,6 +284,7 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     nlohmann::json metrics = {
         { "case", config.name },
         { "case_file", config.file },
+        { "overrides", config.overrides },
         { "backend", options.backend },
         { "threads", ExecSpace::concurrency() },
         { "n_particles", sim.particles.size() },

@@ -61,6 +61,31 @@ TEST( Cli, run_writes_hdf5_xdmf_and_metrics )
     EXPECT_EQ( metrics["status"], "completed" );
 }
 
+// --set overrides keys of the case (here the stage's duration: 2 of the
+// 4 snapshots) and is recorded in metrics.json; a bad one is bad input.
+TEST( Cli, set_overrides_keys_and_is_recorded )
+{
+    const fs::path dir = mpm_test::freshTempDir( "set" );
+    const fs::path file = writeCase( dir, blockCase( "", "" ) );
+    const auto result = runCommand(
+        "run " + file.string() + " --out " + ( dir / "out" ).string() +
+        " --backend serial --set stages[0].duration_s=0.1 --set "
+        "solver.courant_number=0.4" );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    EXPECT_EQ( mpm_test::snapshotCount( dir / "out" / "particles.h5" ), 2 );
+    std::ifstream in( dir / "out" / "metrics.json" );
+    const auto metrics = nlohmann::json::parse( in );
+    EXPECT_EQ( metrics["overrides"],
+               nlohmann::json( { "stages[0].duration_s=0.1",
+                                 "solver.courant_number=0.4" } ) );
+    const auto bad = runCommand( "check " + file.string() +
+                                 " --set solver.courant_number=7" );
+    EXPECT_EQ( bad.exit_code, 2 ) << bad.output;
+    EXPECT_NE( bad.output.find( "--set solver.courant_number=7:1:" ),
+               std::string::npos )
+        << bad.output;
+}
+
 TEST( Cli, bad_case_is_rejected_and_nothing_is_written )
 {
     const fs::path dir = mpm_test::freshTempDir( "bad" );
