@@ -58,12 +58,12 @@ inline double shearInvariant( const std::array<double, 4>& e )
     return std::sqrt( 2.0 / 3.0 * dd );
 }
 
-//! The tests' Mohr-Coulomb soil (E = 10 MPa, nu = 0.3, c0 = 10 kPa, c_r =
-//! 2 kPa, phi = 30 deg) with dilation psi, softening H (Pa) and tension
-//! cut-off sigma_t0 (Pa; apex c0 cot(phi) = 17.3 kPa; infinity: none).
 //! Number of ReturnRegion values (Elastic ... LeftTensionCorner).
 constexpr int num_regions = 11;
 
+//! The tests' Mohr-Coulomb soil (E = 10 MPa, nu = 0.3, c0 = 10 kPa, c_r =
+//! 2 kPa, phi = 30 deg) with dilation psi, softening H (Pa) and tension
+//! cut-off sigma_t0 (Pa; apex c0 cot(phi) = 17.3 kPa; infinity: none).
 inline MaterialParams tensionTestParams( const double psi_deg = 10.0,
                                          const double sigma_t0 = 4.0e3,
                                          const double h = -250.0e3 )

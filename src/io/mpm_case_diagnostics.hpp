@@ -163,18 +163,19 @@ inline std::string quotedList( const std::vector<std::string>& words,
 }
 
 //---------------------------------------------------------------------------//
+//! \brief A character of a TOML bare key (letters, digits, '_', '-').
+inline bool isBareKeyCharacter( const char c )
+{
+    return std::isalnum( static_cast<unsigned char>( c ) ) || c == '_' ||
+           c == '-';
+}
+
+//---------------------------------------------------------------------------//
 //! \brief Dotted key path: key appended to path, quoted if not a bare key.
 inline std::string joinPath( const std::string& path, const std::string& key )
 {
-    const bool bare =
-        !key.empty() &&
-        std::all_of( key.begin(), key.end(),
-                     []( char c )
-                     {
-                         return std::isalnum(
-                                    static_cast<unsigned char>( c ) ) ||
-                                c == '_' || c == '-';
-                     } );
+    const bool bare = !key.empty() &&
+                      std::all_of( key.begin(), key.end(), isBareKeyCharacter );
     const std::string part = bare ? key : "\"" + key + "\"";
     return path.empty() ? part : path + "." + part;
 }

@@ -2,7 +2,6 @@
 #include <io/mpm_case_overrides.hpp>
 #include <io/mpm_toml_prescan.hpp>
 
-#include <cctype>
 #include <memory>
 #include <optional>
 
@@ -18,12 +17,6 @@ struct KeyPart
     std::string name;
     std::optional<std::size_t> index;
 };
-
-bool isBareKeyCharacter( const char c )
-{
-    return std::isalnum( static_cast<unsigned char>( c ) ) || c == '_' ||
-           c == '-';
-}
 
 //! The parts of "a.b[2].c"; empty on a malformed key (message in `why`).
 std::vector<KeyPart> splitKey( const std::string& key, std::string& why )
@@ -92,6 +85,7 @@ toml::source_region overrideSource( const std::string& label )
     where.end = { 1, 1 };
     return where;
 }
+
 /*!
   Applies one override; returns an empty string or what is wrong with it.
   `label` ("--set KEY=VALUE") is the source path of the new value.

@@ -97,13 +97,8 @@ class CaseParser
         r.checkKeys( keys, "[case]" );
         if ( const auto name = r.string( "name", Need::Required ) )
         {
-            const bool valid = std::all_of(
-                name->begin(), name->end(),
-                []( char c )
-                {
-                    return std::isalnum( static_cast<unsigned char>( c ) ) ||
-                           c == '_' || c == '-';
-                } );
+            const bool valid = std::all_of( name->begin(), name->end(),
+                                            Impl::isBareKeyCharacter );
             if ( !valid )
                 _diag.mismatch( *r.find( "name" ), "case.name",
                                 "a name of letters, digits, '_' and '-' "
