@@ -276,9 +276,7 @@ struct SolverConfig
     double flip_fraction = 0.99;
     //! Two-phase: the water takes the solid's FLIP/PIC update plus its
     //! seepage velocity, damped as the drag damps it (mpm::twoPhaseBlend).
-    //! Off by default: it lets a wetting column's solid ring
-    //! (docs/case-file.md).
-    bool water_relative_flip = false;
+    bool water_relative_flip = true;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;
     /*!

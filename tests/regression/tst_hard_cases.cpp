@@ -498,11 +498,11 @@ double greenAmptTime( const double z, const double K, const double d_theta,
   front, where the row-mean S crosses (S_res + 1) / 2 (or p_w crosses
   -25 kPa, reported), must advance downward monotonically (to 1 cm, the
   size of the oscillations of a row mean) and its depth at 1.5, 3.7 and
-  8.5 s must be within a factor 1.5 of the Green–Ampt estimate of
-  verification.md 5.2 (0.5, 1 and 2 m; K = 0.0441 m/s, d_theta = 0.231,
-  h_f = 0.14 m). Depths are measured from the initial surface; the
-  imposed cell puts the effective ponded surface ~0.2 m lower, well inside
-  the factor.
+  8.5 s must lie between the Green–Ampt depth of verification.md 5.2
+  (0.5, 1 and 2 m; K = 0.0441 m/s, d_theta = 0.231, h_f = 0.14 m) and that
+  depth plus one cell: depths are measured from the initial surface, and
+  the ponded surface lies between it and the bottom of the surface cells,
+  whose points are held at p_w = 0.
 
   Ahead of the front (S < S0 + 1e-3, k_rel < 1e-9) the soil must not dry
   out: the front only adds weight above it (compressing it, which raises
@@ -619,12 +619,15 @@ TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
         std::printf( "wetting front at %.1f s: %.3f m, Green-Ampt %.2f m "
                      "(ratio %.2f)\n",
                      t, it->second, z_ref, it->second / z_ref );
-        // Measured (0.25 m cells): 1.04, 0.99 and 0.98 of Green-Ampt at
-        // 1.5, 3.7 and 8.5 s. A drag summing resistances left the front
-        // stuck (~0.1), a non-conservative water balance at 0.61.
-        EXPECT_GT( it->second, z_ref / 1.5 )
+        // Measured (0.25 m cells): 0.64, 1.11 and 2.06 m at 1.5, 3.7 and
+        // 8.5 s, 0.14, 0.11 and 0.06 m deeper than Green-Ampt. The
+        // water's own FLIP/PIC blend, which damps the seepage, gave 0.52,
+        // 0.99 and 1.96 m (too shallow at 3.7 and 8.5 s); a drag summing
+        // resistances left the front stuck (~0.1 of Green-Ampt), a
+        // non-conservative water balance at 0.61.
+        EXPECT_GT( it->second, z_ref )
             << "front at " << t << " s against Green-Ampt " << z_ref << " m";
-        EXPECT_LT( it->second, z_ref * 1.5 )
+        EXPECT_LT( it->second, z_ref + h )
             << "front at " << t << " s against Green-Ampt " << z_ref << " m";
     }
 
