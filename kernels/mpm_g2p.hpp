@@ -49,9 +49,9 @@ KOKKOS_INLINE_FUNCTION double flipPicBlend( const double flip_fraction,
   the part the grid does not carry keeps `memory` of its FLIP update,
     w' = w_pic + memory (w + dw - w_pic),
   so the mixture takes the PIC share and the seepage is damped as the drag
-  damps it (seepageMemory), never faster than the FLIP share (the water's
-  own blend, which is this with memory = flip_fraction, damped the
-  seepage near impermeable boundaries: a Gardner column under rain of
+  damps it, never faster than the FLIP share (physics::seepageMemory). The
+  water's own blend, which is this with memory = flip_fraction, damped the
+  seepage near impermeable boundaries (a Gardner column under rain of
   0.9 K_s ponded in its top cell). Else the water's own blend.
 */
 KOKKOS_INLINE_FUNCTION void
@@ -215,22 +215,14 @@ void g2pVelocityRemapTwoPhase(
             double v_s_pic[2], dv_s[2], v_w_pic[2], dv_w[2];
             interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_s_pic, dv_s );
             interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_w_pic, dv_w );
-            // Only the relative blend uses it (an exp per point). Not below
-            // the FLIP share: w_pic of a point at a wetting front is the
-            // seepage of the wet nodes of its cell, which a near-dry point
-            // does not have; relaxed to it at the drag's rate (within one
-            // step), the points below the front carried that seepage to
-            // their locked nodes each step, where the drag handed it to
-            // the solid (a wetted column rang: 9.7 J against 0.31 J).
+            // Only the relative blend uses it (an exp per point).
             const double memory =
                 relative_flip
-                    ? Kokkos::Experimental::fmax(
-                          flip_fraction,
-                          physics::seepageMemory(
-                              dt, n_p( p ), S_p( p ),
-                              materials[material_p( p )].permeability,
-                              k_rel_p( p ), water.viscosity, water.density,
-                              inertia_scaling ) )
+                    ? physics::seepageMemory(
+                          dt, n_p( p ), S_p( p ),
+                          materials[material_p( p )].permeability, k_rel_p( p ),
+                          water.viscosity, water.density, inertia_scaling,
+                          flip_fraction )
                     : 0.0;
             for ( int d = 0; d < 2; ++d )
             {

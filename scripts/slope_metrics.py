@@ -492,6 +492,63 @@ def pore_pressure_pulses(run, wave_speed):
             "wave_speed_m_per_s": _json_num(wave_speed), "largest": worst}
 
 
+def pressure_peak(run):
+    """How the total stress carries the largest p_w of the stage.
+
+    Finds the point and snapshot of the largest p_w and follows that point (by
+    id) to the snapshot before. Reports its p_w, its total mean pressure
+    p = -tr(sigma')/3 + S p_w (compression positive; `stress` is Bishop's
+    effective stress sigma' = sigma + S p_w m) and its effective mean pressure
+    p' = -tr(sigma')/3 at both, their changes, and the point's solid speed at
+    both. An undrained compression of saturated soil raises p_w with the total
+    pressure while p' stays (Skempton's B = dp_w / dp near 1). None for a dry
+    run.
+    """
+    if not run.two_phase:
+        return None
+    snaps = run.stage_snapshots
+    best = None
+    for k, snap in enumerate(snaps):
+        active = run.active(snap)
+        p = np.where(active, run.field(snap, "pore_pressure"), -np.inf)
+        i = int(np.argmax(p))
+        if best is None or p[i] > best[2]:
+            best = (k, i, float(p[i]))
+    if best is None or best[0] == 0:
+        return None
+    k, i, _ = best
+
+    def state(snap, index):
+        sig = run.field(snap, "stress")[index]
+        p_w = float(run.field(snap, "pore_pressure")[index])
+        S = float(run.field(snap, "saturation")[index])
+        p_eff = -(sig[0] + sig[1] + sig[3]) / 3.0
+        v = run.field(snap, "velocity")[index]
+        return {"time_s": _json_num(snap.t),
+                "xy_m": [_json_num(c) for c in run.field(snap, "x")[index]],
+                "p_w_pa": _json_num(p_w), "saturation": _json_num(S),
+                "total_mean_pressure_pa": _json_num(p_eff + S * p_w),
+                "effective_mean_pressure_pa": _json_num(p_eff),
+                "solid_speed_m_per_s": _json_num(float(np.hypot(v[0], v[1])))}
+
+    point_id = int(run.field(snaps[k], "id")[i])
+    before_ids = run.field(snaps[k - 1], "id")
+    j = np.flatnonzero(before_ids == point_id)
+    peak = state(snaps[k], i)
+    result = {"definition": "the point of the largest p_w of the stage, at that snapshot and "
+                            "the one before: p_w, total mean pressure -tr(sigma')/3 + S p_w "
+                            "and effective mean pressure -tr(sigma')/3 (compression "
+                            "positive), solid speed",
+              "point_id": point_id, "peak": peak}
+    if j.size:
+        before = state(snaps[k - 1], int(j[0]))
+        result["before"] = before
+        d_total = peak["total_mean_pressure_pa"] - before["total_mean_pressure_pa"]
+        d_p_w = peak["p_w_pa"] - before["p_w_pa"]
+        result["skempton_b"] = _json_num(d_p_w / d_total) if d_total else None
+    return result
+
+
 def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
     """Failure metrics of run.stage (see the module docstring) as a JSON-ready dict.
 
@@ -646,6 +703,7 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
         "stage": run.stage,
         "crest_hydrostatic_error": crest_hydrostatic(run),
         "pore_pressure_pulses": pore_pressure_pulses(run, wave_speed),
+        "pressure_peak": pressure_peak(run),
         "stage_start_time_s": _json_num(run.stage_start_s),
         "stage_start_source": run.stage_start_source,
         "snapshots_analysed": len(run.stage_snapshots),

@@ -1,8 +1,11 @@
 // The implicit-drag nodal update of both phases (formulation.md step 2):
-// the 2x2 solve, the ties of an impermeable or flux boundary, a fixed solid.
+// the 2x2 solve, the ties of an impermeable or flux boundary, a fixed solid;
+// and the share of a point's seepage the G2P blend keeps over a step.
 #include <physics/mpm_two_phase.hpp>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace
 {
@@ -64,6 +67,34 @@ TEST( TwoPhaseNodalUpdate, tied_seepage_carries_the_prescribed_flux )
     EXPECT_NEAR( nS * mpm::physics::tiedSeepage( q, m_w, m_s, vol, rho_w ), q,
                  1.0e-15 );
     EXPECT_EQ( mpm::physics::tiedSeepage( q, 0.0, m_s, vol, rho_w ), 0.0 );
+}
+
+// The drag's decay exp(-dt / tau) of the seepage, tau = f rho_w k k_rel /
+// (n S mu), floored at the FLIP share.
+TEST( SeepageMemory, decays_at_the_drag_rate_but_not_below_the_flip_share )
+{
+    const double n = 0.3, k = 4.5e-9, mu = 1.0e-3, rho_w = 1000.0;
+    const double tau = rho_w * k / ( n * mu ); // saturated, f = 1: 15 ms
+    EXPECT_NEAR( tau, 0.015, 1.0e-12 );
+    const auto memory = [&]( const double step, const double S,
+                             const double k_rel, const double f,
+                             const double flip )
+    {
+        return mpm::physics::seepageMemory( step, n, S, k, k_rel, mu, rho_w, f,
+                                            flip );
+    };
+    // Small steps: the drag's decay, above the floor.
+    EXPECT_NEAR( memory( 1.0e-5, 1.0, 1.0, 1.0, 0.99 ),
+                 std::exp( -1.0e-5 / tau ), 1.0e-15 );
+    EXPECT_NEAR( memory( 1.0e-5, 1.0, 1.0, 4.0, 0.99 ),
+                 std::exp( -1.0e-5 / ( 4.0 * tau ) ), 1.0e-15 );
+    EXPECT_NEAR( memory( 1.0e-5, 0.5, 0.25, 1.0, 0.99 ),
+                 std::exp( -1.0e-5 * 0.5 / ( 0.25 * tau ) ), 1.0e-15 );
+    // A 3e-4 s step decays it to 0.980: the FLIP share 0.99 is kept.
+    EXPECT_EQ( memory( 3.0e-4, 1.0, 1.0, 1.0, 0.99 ), 0.99 );
+    // Near-dry (k_rel 1e-10) and impermeable points keep the FLIP share.
+    EXPECT_EQ( memory( 1.0e-5, 0.23, 1.0e-10, 1.0, 0.995 ), 0.995 );
+    EXPECT_EQ( memory( 1.0e-5, 1.0, 0.0, 1.0, 0.995 ), 0.995 );
 }
 
 } // namespace

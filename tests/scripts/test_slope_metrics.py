@@ -215,6 +215,32 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertAlmostEqual(pulses["largest"]["joukowsky_pa"], joukowsky, places=3)
         self.assertEqual(pulses["largest"]["time_s"], 10.0)
 
+    def test_pressure_peak_follows_the_point_and_splits_total_pressure(self):
+        make_run(self.dir)
+        # The last two snapshots: one point's p_w rises 50 -> 200 kPa at an
+        # unchanged effective stress (an undrained compression: B = 1).
+        with h5py.File(os.path.join(self.dir, "particles.h5"), "r+") as f:
+            names = sorted(f["snapshots"].keys())
+            for name, p_w in ((names[-2], 5.0e4), (names[-1], 2.0e5)):
+                snap = f["snapshots"][name]
+                x = snap["x"][:]
+                k = int(np.argmin(np.hypot(x[:, 0] - 6.25, x[:, 1] - 0.24)))
+                p = snap["pore_pressure"][:]
+                p[k] = p_w
+                snap["pore_pressure"][...] = p
+                S = snap["saturation"][:]
+                S[k] = 1.0
+                snap["saturation"][...] = S
+                point_id, sig_yy = int(snap["id"][k]), float(snap["stress"][k, 1])
+        peak = self.analyse()["pressure_peak"]
+        self.assertEqual(peak["point_id"], point_id)
+        self.assertAlmostEqual(peak["peak"]["p_w_pa"], 2.0e5)
+        self.assertAlmostEqual(peak["before"]["p_w_pa"], 5.0e4)
+        self.assertAlmostEqual(peak["peak"]["effective_mean_pressure_pa"], -sig_yy / 3.0, places=3)
+        self.assertAlmostEqual(peak["peak"]["total_mean_pressure_pa"], 2.0e5 - sig_yy / 3.0,
+                               places=3)
+        self.assertAlmostEqual(peak["skempton_b"], 1.0, places=6)
+
     def test_single_stage_run_uses_x_minus_displacement(self):
         make_run(self.dir, two_stage=False, two_phase=False)
         r = self.analyse()
