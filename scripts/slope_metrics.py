@@ -492,7 +492,7 @@ def pore_pressure_pulses(run, wave_speed):
             "wave_speed_m_per_s": _json_num(wave_speed), "largest": worst}
 
 
-def pressure_peak(run):
+def pressure_peak(run, wave_speed):
     """How the total stress carries the largest p_w of the stage.
 
     Finds the point and snapshot of the largest p_w and follows that point (by
@@ -501,8 +501,11 @@ def pressure_peak(run):
     effective stress sigma' = sigma + S p_w m) and its effective mean pressure
     p' = -tr(sigma')/3 at both, their changes, and the point's solid speed at
     both. An undrained compression of saturated soil raises p_w with the total
-    pressure while p' stays (Skempton's B = dp_w / dp near 1). None for a dry
-    run.
+    pressure while p' stays (Skempton's B = dp_w / dp near 1); a change dv of
+    the solid's velocity sends an undrained wave of total pressure
+    rho_m c |dv| (Joukowsky; rho_m = m_s / V + n S rho_w, c the undrained wave
+    speed), reported with the ratio of the total pressure's change to it.
+    None for a dry run.
     """
     if not run.two_phase:
         return None
@@ -538,7 +541,9 @@ def pressure_peak(run):
     result = {"definition": "the point of the largest p_w of the stage, at that snapshot and "
                             "the one before: p_w, total mean pressure -tr(sigma')/3 + S p_w "
                             "and effective mean pressure -tr(sigma')/3 (compression "
-                            "positive), solid speed",
+                            "positive), solid speed; Skempton's B = dp_w / dp between them; "
+                            "the undrained wave rho_m c |dv_s| of the solid's velocity "
+                            "change, c the undrained wave speed",
               "point_id": point_id, "peak": peak}
     if j.size:
         before = state(snaps[k - 1], int(j[0]))
@@ -546,6 +551,19 @@ def pressure_peak(run):
         d_total = peak["total_mean_pressure_pa"] - before["total_mean_pressure_pa"]
         d_p_w = peak["p_w_pa"] - before["p_w_pa"]
         result["skempton_b"] = _json_num(d_p_w / d_total) if d_total else None
+        if wave_speed:
+            snap, index = snaps[k], i
+            rho_m = float(run.field(snap, "mass")[index] / run.field(snap, "volume")[index]
+                          + run.field(snap, "porosity")[index] * peak["saturation"] * 1000.0)
+            dv = run.field(snap, "velocity")[index] - \
+                run.field(snaps[k - 1], "velocity")[int(j[0])]
+            wave = rho_m * wave_speed * float(np.hypot(dv[0], dv[1]))
+            result["undrained_wave"] = {
+                "mixture_density_kg_per_m3": _json_num(rho_m),
+                "wave_speed_m_per_s": _json_num(wave_speed),
+                "solid_velocity_change_m_per_s": _json_num(float(np.hypot(dv[0], dv[1]))),
+                "pressure_pa": _json_num(wave),
+                "total_pressure_change_over_it": _json_num(d_total / wave) if wave else None}
     return result
 
 
@@ -703,7 +721,7 @@ def slope_metrics(run, toe_x=DEFAULT_TOE_X, **options):
         "stage": run.stage,
         "crest_hydrostatic_error": crest_hydrostatic(run),
         "pore_pressure_pulses": pore_pressure_pulses(run, wave_speed),
-        "pressure_peak": pressure_peak(run),
+        "pressure_peak": pressure_peak(run, wave_speed),
         "stage_start_time_s": _json_num(run.stage_start_s),
         "stage_start_source": run.stage_start_source,
         "snapshots_analysed": len(run.stage_snapshots),

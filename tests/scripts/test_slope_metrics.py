@@ -217,11 +217,18 @@ class SlopeMetricsTest(unittest.TestCase):
 
     def test_pressure_peak_follows_the_point_and_splits_total_pressure(self):
         make_run(self.dir)
+        with open(os.path.join(self.dir, "metrics.json")) as f:
+            metrics = json.load(f)
+        metrics["time_step"] = {"final_max_wave_speed_m_per_s": 1500.0}
+        with open(os.path.join(self.dir, "metrics.json"), "w") as f:
+            json.dump(metrics, f)
         # The last two snapshots: one point's p_w rises 50 -> 200 kPa at an
-        # unchanged effective stress (an undrained compression: B = 1).
+        # unchanged effective stress (an undrained compression: B = 1) while
+        # its solid slows from 0.5 to 0.45 m/s: rho_m = 2000 + 0.3 * 1000.
+        wave = 2300.0 * 1500.0 * 0.05
         with h5py.File(os.path.join(self.dir, "particles.h5"), "r+") as f:
             names = sorted(f["snapshots"].keys())
-            for name, p_w in ((names[-2], 5.0e4), (names[-1], 2.0e5)):
+            for name, p_w, v in ((names[-2], 5.0e4, 0.5), (names[-1], 2.0e5, 0.45)):
                 snap = f["snapshots"][name]
                 x = snap["x"][:]
                 k = int(np.argmin(np.hypot(x[:, 0] - 6.25, x[:, 1] - 0.24)))
@@ -231,6 +238,9 @@ class SlopeMetricsTest(unittest.TestCase):
                 S = snap["saturation"][:]
                 S[k] = 1.0
                 snap["saturation"][...] = S
+                velocity = snap["velocity"][:]
+                velocity[k] = (0.6 * v, -0.8 * v)
+                snap["velocity"][...] = velocity
                 point_id, sig_yy = int(snap["id"][k]), float(snap["stress"][k, 1])
         peak = self.analyse()["pressure_peak"]
         self.assertEqual(peak["point_id"], point_id)
@@ -240,6 +250,9 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertAlmostEqual(peak["peak"]["total_mean_pressure_pa"], 2.0e5 - sig_yy / 3.0,
                                places=3)
         self.assertAlmostEqual(peak["skempton_b"], 1.0, places=6)
+        self.assertAlmostEqual(peak["undrained_wave"]["pressure_pa"], wave, places=3)
+        self.assertAlmostEqual(peak["undrained_wave"]["total_pressure_change_over_it"],
+                               1.5e5 / wave, places=6)
 
     def test_single_stage_run_uses_x_minus_displacement(self):
         make_run(self.dir, two_stage=False, two_phase=False)
