@@ -192,13 +192,17 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertAlmostEqual(r["stage_start_time_s"], 1.0)
         self.assertIn("end of stage 'gravity'", r["definition"]["reference_state"])
 
-    def test_pore_pressure_pulse_against_hydrostatic_plus_joukowsky(self):
+    def make_run_with_wave_speed(self, wave_speed):
+        """The synthetic run, its metrics.json recording the undrained wave speed."""
         make_run(self.dir)
         with open(os.path.join(self.dir, "metrics.json")) as f:
             metrics = json.load(f)
-        metrics["time_step"] = {"final_max_wave_speed_m_per_s": 1000.0}
+        metrics["time_step"] = {"final_max_wave_speed_m_per_s": wave_speed}
         with open(os.path.join(self.dir, "metrics.json"), "w") as f:
             json.dump(metrics, f)
+
+    def test_pore_pressure_pulse_against_hydrostatic_plus_joukowsky(self):
+        self.make_run_with_wave_speed(1000.0)
         # A point that does not move, 4.5 m below the top of its column;
         # saturated points seep at 0.04 m/s: momentum 1000 * 0.3 * 0.04.
         hydrostatic, joukowsky = 9810.0 * 4.5, 1000.0 * 12.0
@@ -216,12 +220,7 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertEqual(pulses["largest"]["time_s"], 10.0)
 
     def test_pressure_peak_follows_the_point_and_splits_total_pressure(self):
-        make_run(self.dir)
-        with open(os.path.join(self.dir, "metrics.json")) as f:
-            metrics = json.load(f)
-        metrics["time_step"] = {"final_max_wave_speed_m_per_s": 1500.0}
-        with open(os.path.join(self.dir, "metrics.json"), "w") as f:
-            json.dump(metrics, f)
+        self.make_run_with_wave_speed(1500.0)
         # The last two snapshots: one point's p_w rises 50 -> 200 kPa at an
         # unchanged effective stress (an undrained compression: B = 1) while
         # its solid slows from 0.5 to 0.45 m/s: rho_m = 2000 + 0.3 * 1000.
