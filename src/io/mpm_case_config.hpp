@@ -275,7 +275,8 @@ struct SolverConfig
     //! (Simulation::stepFlipFraction).
     double flip_fraction = 0.99;
     //! Two-phase: the water takes the solid's FLIP/PIC update plus its
-    //! seepage velocity, damped as the drag damps it (mpm::twoPhaseBlend).
+    //! seepage velocity, damped as the drag damps it but never faster than
+    //! the PIC share (mpm::twoPhaseBlend, physics::seepageMemory).
     bool water_relative_flip = true;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;

@@ -240,12 +240,13 @@ TEST( GardnerInfiltrationSolution, meets_its_initial_and_boundary_conditions )
 
 // The rain enters through the top edge (a flux boundary of the water:
 // the top nodes' seepage q / (n S)). With the default transfer (the
-// seepage damped as the drag damps it, solver.water_relative_flip) the
-// points are within 0.0045 of the exact solution at 20 cells and 0.0032 at
-// 40 (printed). The water's own FLIP/PIC blend damps the seepage while the
-// front accelerates: 0.045 at 0.5 s, 0.019 from 1 s on. As a source in the
-// top cell's points under an impermeable top node row the rain ponds in
-// the top cell (0.57 off at 0.5 s with the water's own blend; printed).
+// seepage damped as the drag damps it, never faster than the blend's PIC
+// share: solver.water_relative_flip) the points are within 0.0045 of the
+// exact solution at 20 cells and 0.0032 at 40 (printed). The water's own
+// FLIP/PIC blend damps the seepage while the front accelerates: 0.045 at 0.5 s,
+// 0.019 from 1 s on. As a source in the top cell's points under an impermeable
+// top node row the rain ponds in the top cell (0.57 off at 0.5 s with the
+// water's own blend; printed).
 TYPED_TEST( GardnerInfiltration, conductivity_matches_exact_solution )
 {
     const auto coarse = errorHistory<TypeParam>( 20, "" );
