@@ -598,8 +598,8 @@ TYPED_TEST( HardCases, wetting_front_follows_green_ampt )
     // extrapolates the front's gradient and the level that holds the
     // cell's water sinks (the retention law is flat there). Without the
     // slope -50.3 kPa; a non-conservative water balance gave -53.4 kPa.
-    // To be cured (an issue-9 leftover); Bishop's sigma' moves by
-    // S dp_w = 2 kPa.
+    // A known limit of the one-sided slope, not cured yet; Bishop's sigma'
+    // moves by S dp_w = 2 kPa.
     EXPECT_GT( S_dry_min, S0 - 6.0e-4 ) << "the soil ahead of the front dried";
     EXPECT_GT( p_dry, -suction - 12.0e3 )
         << "the soil ahead of the front dried";
