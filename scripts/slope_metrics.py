@@ -405,7 +405,8 @@ def _json_num(v, digits=6):
 
 
 CREST_X_M = (2.0, 10.0)
-RHO_W_G = 1000.0 * 9.81
+RHO_W = 1000.0  # kg/m^3
+RHO_W_G = RHO_W * 9.81
 
 
 def crest_hydrostatic(run):
@@ -465,7 +466,7 @@ def pore_pressure_pulses(run, wave_speed):
         x = run.field(snap, "x")[active]
         p = run.field(snap, "pore_pressure")[active]
         w = run.field(snap, "water_velocity")[active] - run.field(snap, "velocity")[active]
-        momentum = 1000.0 * run.field(snap, "porosity")[active] * \
+        momentum = RHO_W * run.field(snap, "porosity")[active] * \
             run.field(snap, "saturation")[active] * np.hypot(w[:, 0], w[:, 1])
         recent = max(float(momentum.max()), momentum_before)
         momentum_before = float(momentum.max())
@@ -522,6 +523,7 @@ def pressure_peak(run, wave_speed):
     k, i, _ = best
 
     def state(snap, index):
+        """(the point's JSON entry, its solid velocity)."""
         sig = run.field(snap, "stress")[index]
         p_w = float(run.field(snap, "pore_pressure")[index])
         S = float(run.field(snap, "saturation")[index])
@@ -532,12 +534,12 @@ def pressure_peak(run, wave_speed):
                 "p_w_pa": _json_num(p_w), "saturation": _json_num(S),
                 "total_mean_pressure_pa": _json_num(p_eff + S * p_w),
                 "effective_mean_pressure_pa": _json_num(p_eff),
-                "solid_speed_m_per_s": _json_num(float(np.hypot(v[0], v[1])))}
+                "solid_speed_m_per_s": _json_num(float(np.hypot(v[0], v[1])))}, v
 
     point_id = int(run.field(snaps[k], "id")[i])
     before_ids = run.field(snaps[k - 1], "id")
     j = np.flatnonzero(before_ids == point_id)
-    peak = state(snaps[k], i)
+    peak, v_peak = state(snaps[k], i)
     result = {"definition": "the point of the largest p_w of the stage, at that snapshot and "
                             "the one before: p_w, total mean pressure -tr(sigma')/3 + S p_w "
                             "and effective mean pressure -tr(sigma')/3 (compression "
@@ -546,22 +548,20 @@ def pressure_peak(run, wave_speed):
                             "change, c the undrained wave speed",
               "point_id": point_id, "peak": peak}
     if j.size:
-        before = state(snaps[k - 1], int(j[0]))
+        before, v_before = state(snaps[k - 1], int(j[0]))
         result["before"] = before
         d_total = peak["total_mean_pressure_pa"] - before["total_mean_pressure_pa"]
         d_p_w = peak["p_w_pa"] - before["p_w_pa"]
         result["skempton_b"] = _json_num(d_p_w / d_total) if d_total else None
         if wave_speed:
-            snap, index = snaps[k], i
-            rho_m = float(run.field(snap, "mass")[index] / run.field(snap, "volume")[index]
-                          + run.field(snap, "porosity")[index] * peak["saturation"] * 1000.0)
-            dv = run.field(snap, "velocity")[index] - \
-                run.field(snaps[k - 1], "velocity")[int(j[0])]
-            wave = rho_m * wave_speed * float(np.hypot(dv[0], dv[1]))
+            rho_m = float(run.field(snaps[k], "mass")[i] / run.field(snaps[k], "volume")[i]
+                          + run.field(snaps[k], "porosity")[i] * peak["saturation"] * RHO_W)
+            dv = float(np.hypot(*(v_peak - v_before)))
+            wave = rho_m * wave_speed * dv
             result["undrained_wave"] = {
                 "mixture_density_kg_per_m3": _json_num(rho_m),
                 "wave_speed_m_per_s": _json_num(wave_speed),
-                "solid_velocity_change_m_per_s": _json_num(float(np.hypot(dv[0], dv[1]))),
+                "solid_velocity_change_m_per_s": _json_num(dv),
                 "pressure_pa": _json_num(wave),
                 "total_pressure_change_over_it": _json_num(d_total / wave) if wave else None}
     return result
