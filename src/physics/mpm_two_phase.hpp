@@ -357,7 +357,12 @@ struct CellWaterEquilibrium
             else
                 lo = P;
             double next = P - g / slope;
-            if ( !( next > lo && next < hi ) )
+            // The bracket's ends included: a step that rounds to no step
+            // (g = 0 or below one ulp of P, e.g. the exact level of a
+            // saturated cell) has converged; excluding it bisected away
+            // from the level, adding water (~1e-10 of the inflow, tests/
+            // regression/tst_polyline_inflow.cpp).
+            if ( !( next >= lo && next <= hi ) )
                 next = 0.5 * ( lo + hi );
             const double change = KE::fabs( next - P );
             P = next;
