@@ -90,7 +90,14 @@ struct WaterConfig
 //! beyond the ends; empty means 1.
 using TimeFunction = std::vector<std::array<double, 2>>;
 
-//! Selects material points by their initial position.
+//! How the length of an inflow polyline is measured.
+enum class LineMeasure
+{
+    AlongLine, //!< the length along the line (flux per unit line length)
+    Horizontal //!< its horizontal projection (rain measured on the level)
+};
+
+//! Selects material points by their position at the stage start.
 struct PointSelection
 {
     enum class Kind
@@ -100,10 +107,16 @@ struct PointSelection
         TopCells,     //!< points in the cells along the grid's top edge
         BottomCells,  //!< ... its bottom edge
         LeftCells,    //!< ... its left edge
-        RightCells    //!< ... its right edge
+        RightCells,   //!< ... its right edge
+        All,          //!< every active point
+        Polyline      //!< points of the cells polyline_m passes through
     };
     Kind kind = Kind::Box;
     std::array<Point2, 2> box_m = { Point2{ 0.0, 0.0 }, Point2{ 0.0, 0.0 } };
+    //! Polyline only: its vertices (m) and how its length is measured
+    //! (a cell the line crosses only vertically has no horizontal length).
+    std::vector<Point2> polyline_m;
+    LineMeasure polyline_measure = LineMeasure::AlongLine;
 };
 
 /*!
@@ -116,6 +129,9 @@ struct PointSelection
   flux / (n S) (an impermeable edge with a prescribed seepage; the length
   is the edge's). With ponding, a selected point (on an edge: a point of
   the edge's cells) that saturates keeps p_w <= 0 (the excess runs off).
+  On a polyline: length_m is the polyline's length (along it or projected
+  on the horizontal), and each cell it passes through takes the water of
+  its piece of the line (polylineCellShares).
 */
 struct WaterInflow
 {
@@ -132,17 +148,24 @@ struct WaterInflow
     //! True for a flux boundary on a grid edge (no point source).
     bool onGridEdge() const
     {
-        return points.kind != PointSelection::Kind::Box &&
-               points.kind != PointSelection::Kind::SurfaceCells;
+        using Kind = PointSelection::Kind;
+        return points.kind == Kind::TopCells ||
+               points.kind == Kind::BottomCells ||
+               points.kind == Kind::LeftCells ||
+               points.kind == Kind::RightCells;
     }
 };
 
-//! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t).
+//! Prescribed pore pressure on selected points: p_w = pressure_pa * f(t),
+//! or, with hold_initial, each point's p_w at the stage start.
 struct PorePressureCondition
 {
     PointSelection points;
     double pressure_pa = 0.0;
     TimeFunction time_function;
+    //! Hold each selected point's p_w at its value at the stage start
+    //! (pressure_pa and time_function are not used).
+    bool hold_initial = false;
 };
 
 //! External force on selected points: traction_pa * length_m shared
@@ -165,6 +188,9 @@ struct BodyConfig
     //! Two-phase: initial pore pressure p_w = a + b * y (Pa, y in m).
     double initial_pore_pressure_pa = 0.0;
     double initial_pore_pressure_gradient_pa_per_m = 0.0;
+    //! Two-phase, instead of a + b y: (y_m, p_w_pa) pairs, y increasing;
+    //! p_w piecewise linear in y, constant beyond the ends. Empty: a + b y.
+    std::vector<std::array<double, 2>> initial_pore_pressure_profile;
 };
 
 //! What a boundary condition prescribes on the selected nodes.
@@ -332,6 +358,9 @@ struct CaseConfig
     std::string fingerprint;
     //! `--set KEY=VALUE` overrides applied to the file (readCaseFile).
     std::vector<std::string> overrides;
+    //! Warnings of the reader ("file:line:column: warning: ..."), in file
+    //! order; the case is valid, the CLI prints them at check and run.
+    std::vector<std::string> warnings;
     std::string name;
     std::string description;
     AnalysisType analysis = AnalysisType::Dry;

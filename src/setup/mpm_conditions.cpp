@@ -1,6 +1,7 @@
 #include <setup/mpm_conditions.hpp>
 #include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
+#include <setup/mpm_polyline_cells.hpp>
 
 #include <mpm_device_type.hpp>
 
@@ -11,20 +12,55 @@
 namespace mpm
 {
 //---------------------------------------------------------------------------//
+double
+interpolatePiecewiseLinear( const std::vector<std::array<double, 2>>& table,
+                            const double x )
+{
+    if ( x <= table.front()[0] )
+        return table.front()[1];
+    for ( std::size_t k = 1; k < table.size(); ++k )
+        if ( x <= table[k][0] )
+        {
+            const auto& a = table[k - 1];
+            const auto& b = table[k];
+            return a[1] + ( b[1] - a[1] ) * ( x - a[0] ) / ( b[0] - a[0] );
+        }
+    return table.back()[1];
+}
+
+//---------------------------------------------------------------------------//
 double evaluateTimeFunction( const TimeFunction& function, const double t )
 {
-    if ( function.empty() )
-        return 1.0;
-    if ( t <= function.front()[0] )
-        return function.front()[1];
-    for ( std::size_t k = 1; k < function.size(); ++k )
-        if ( t <= function[k][0] )
+    return function.empty() ? 1.0 : interpolatePiecewiseLinear( function, t );
+}
+
+//---------------------------------------------------------------------------//
+double initialPorePressure( const BodyConfig& body, const double y )
+{
+    if ( !body.initial_pore_pressure_profile.empty() )
+        return interpolatePiecewiseLinear( body.initial_pore_pressure_profile,
+                                           y );
+    return body.initial_pore_pressure_pa +
+           body.initial_pore_pressure_gradient_pa_per_m * y;
+}
+
+//---------------------------------------------------------------------------//
+std::map<int, double> polylineSelectionShares( const PointSelection& selection,
+                                               const std::vector<double>& x,
+                                               const std::vector<int>& status,
+                                               const GridConfig& grid )
+{
+    std::set<int> occupied;
+    for ( std::size_t p = 0; p < status.size(); ++p )
+        if ( status[p] == point_active )
         {
-            const auto& a = function[k - 1];
-            const auto& b = function[k];
-            return a[1] + ( b[1] - a[1] ) * ( t - a[0] ) / ( b[0] - a[0] );
+            const int cell = cellIndexAt( x[2 * p], x[2 * p + 1], grid );
+            if ( cell >= 0 )
+                occupied.insert( cell );
         }
-    return function.back()[1];
+    return polylineCellShares( polylinePieces( selection.polyline_m, grid,
+                                               selection.polyline_measure ),
+                               occupied );
 }
 
 //---------------------------------------------------------------------------//
@@ -72,6 +108,9 @@ std::vector<bool> selectPoints( const PointSelection& selection,
         for ( std::size_t p = 0; p < n; ++p )
             if ( status[p] == point_active )
                 occupied.insert( cellOf( p ) );
+    std::map<int, double> shares;
+    if ( selection.kind == PointSelection::Kind::Polyline )
+        shares = polylineSelectionShares( selection, x, status, grid );
 
     for ( std::size_t p = 0; p < n; ++p )
     {
@@ -88,6 +127,11 @@ std::vector<bool> selectPoints( const PointSelection& selection,
             const auto cell = cellOf( p );
             picked[p] = occupied.count( { cell.first, cell.second + 1 } ) == 0;
         }
+        else if ( selection.kind == PointSelection::Kind::All )
+            picked[p] = true;
+        else if ( selection.kind == PointSelection::Kind::Polyline )
+            picked[p] =
+                shares.count( cellIndexAt( x[2 * p], x[2 * p + 1], grid ) ) > 0;
         else
             picked[p] = inEdgeCells( selection.kind, cellOf( p ), grid );
     }

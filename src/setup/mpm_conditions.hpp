@@ -3,18 +3,42 @@
 
 #include <io/mpm_case_config.hpp>
 
+#include <array>
+#include <map>
 #include <vector>
 
 namespace mpm
 {
+//! Piecewise-linear interpolation of (x, value) pairs (x increasing) at x,
+//! constant beyond the first and last pair; table must not be empty.
+double
+interpolatePiecewiseLinear( const std::vector<std::array<double, 2>>& table,
+                            double x );
+
 //! Value of a piecewise-linear time function at stage time t (1 if empty).
 double evaluateTimeFunction( const TimeFunction& function, double t );
+
+//! Initial p_w of a body's point at height y: the body's profile, or
+//! a + b y without one, Pa.
+double initialPorePressure( const BodyConfig& body, double y );
+
+/*!
+  \brief Each fed cell's share of a polyline selection's water
+  (polylineCellShares) with the cells occupied by the active points of x
+  (2 per point) and status.
+*/
+std::map<int, double> polylineSelectionShares( const PointSelection& selection,
+                                               const std::vector<double>& x,
+                                               const std::vector<int>& status,
+                                               const GridConfig& grid );
 
 /*!
   \brief Which points a selection picks, from their positions x (2 per
   point) and status (only active points are picked). SurfaceCells picks the
   points of every occupied cell whose upper neighbour cell holds no point;
-  the edge kinds the points of the cells along that grid edge.
+  the edge kinds the points of the cells along that grid edge; All every
+  active point; Polyline the points of the cells that take a share of the
+  line (polylineSelectionShares).
 */
 std::vector<bool> selectPoints( const PointSelection& selection,
                                 const std::vector<double>& x,
