@@ -56,14 +56,28 @@ std::optional<std::array<Point2, 2>> readBox( TableReader& r )
     return std::array<Point2, 2>{ *lo, *hi };
 }
 
+} // namespace
+
 //---------------------------------------------------------------------------//
-// where (and box_m) of a condition on material points.
-PointSelection readSelection( TableReader& r )
+PointSelection readSelection( TableReader& r, const bool polyline_allowed )
 {
     PointSelection selection;
-    const auto where = r.choice(
-        "where", { "box", "surface_cells", "top", "bottom", "left", "right" },
-        Need::Required );
+    // In the order of PointSelection::Kind.
+    std::vector<std::string> kinds = { "box",  "surface_cells", "top", "bottom",
+                                       "left", "right",         "all" };
+    if ( polyline_allowed )
+        kinds.push_back( "polyline" );
+    const toml::node* where_node = r.find( "where" );
+    if ( !polyline_allowed && where_node &&
+         where_node->value_or<std::string>( "" ) == "polyline" )
+    {
+        r.diag().keyError( *where_node, r.keyPath( "where" ),
+                           "\"polyline\" is only for [[stages.inflows]]; "
+                           "expected one of " +
+                               quotedList( kinds, '"' ) );
+        return selection;
+    }
+    const auto where = r.choice( "where", kinds, Need::Required );
     if ( where )
         selection.kind = static_cast<PointSelection::Kind>( *where );
     if ( where && selection.kind == PointSelection::Kind::Box )
@@ -75,11 +89,17 @@ PointSelection readSelection( TableReader& r )
         r.diag().keyError( *r.find( "box_m" ), r.keyPath( "box_m" ),
                            "only for where = \"box\"; remove it or change "
                            "'where'" );
+    if ( polyline_allowed && where &&
+         selection.kind != PointSelection::Kind::Polyline )
+        for ( const char* key : { "polyline_m", "measured_on" } )
+            if ( const toml::node* node = r.find( key ) )
+                r.diag().keyError( *node, r.keyPath( key ),
+                                   "only for where = \"polyline\"; remove "
+                                   "it or change 'where'" );
     return selection;
 }
 
 //---------------------------------------------------------------------------//
-// time_function = [[t_s, factor], ...]: optional, empty if not given.
 TimeFunction readTimeFunction( TableReader& r )
 {
     const std::string expected =
@@ -127,8 +147,6 @@ TimeFunction readTimeFunction( TableReader& r )
     return function;
 }
 
-} // namespace
-
 //---------------------------------------------------------------------------//
 std::vector<double> readSnapshotTimes( TableReader& r )
 {
@@ -169,6 +187,7 @@ std::vector<double> readSnapshotTimes( TableReader& r )
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,
+                                            const GridConfig* grid,
                                             Diagnostics& diag )
 {
     std::vector<BoundaryConfig> result;
@@ -211,6 +230,13 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
             {
                 checkPolyline( *line, *r.find( "polyline_m" ),
                                path + ".polyline_m", diag );
+                if ( grid )
+                    warnPolylineOutsideGrid(
+                        *line, *r.find( "polyline_m" ), path + ".polyline_m",
+                        *grid,
+                        "it selects only the grid's nodes below it, the "
+                        "line extended horizontally beyond its ends",
+                        diag );
                 bc.polyline_m = *line;
             }
         }
@@ -233,14 +259,31 @@ std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
     {
         TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
                        diag );
-        r.checkKeys( { "where", "box_m", "pressure_pa", "time_function" },
-                     "[[stages.pore_pressures]]" );
+        r.checkKeys(
+            { "where", "box_m", "pressure_pa", "hold", "time_function" },
+            "[[stages.pore_pressures]]" );
         PorePressureCondition condition;
-        condition.points = readSelection( r );
-        condition.pressure_pa =
-            r.number( "pressure_pa", Range::any(), "Pa", Need::Required )
-                .value_or( 0.0 );
-        condition.time_function = readTimeFunction( r );
+        condition.points = readSelection( r, false );
+        const toml::node* hold = r.find( "hold" );
+        condition.hold_initial =
+            hold && r.choice( "hold", { "initial" }, Need::Optional );
+        if ( hold && r.find( "pressure_pa" ) )
+            diag.keyError( *r.find( "pressure_pa" ), r.keyPath( "pressure_pa" ),
+                           "not allowed with hold: a held pore pressure "
+                           "keeps each point's p_w at the stage start; give "
+                           "either pressure_pa or hold" );
+        else if ( !hold )
+            condition.pressure_pa =
+                r.number( "pressure_pa", Range::any(),
+                          "Pa (or hold = \"initial\")", Need::Required )
+                    .value_or( 0.0 );
+        if ( hold && r.find( "time_function" ) )
+            diag.keyError( *r.find( "time_function" ),
+                           r.keyPath( "time_function" ),
+                           "not allowed with hold: the held p_w of each point "
+                           "is its value at the stage start" );
+        else
+            condition.time_function = readTimeFunction( r );
         result.push_back( condition );
     }
     return result;
@@ -259,7 +302,7 @@ std::vector<PointLoad> readLoads( const toml::array& array,
             { "where", "box_m", "traction_pa", "length_m", "time_function" },
             "[[stages.loads]]" );
         PointLoad load;
-        load.points = readSelection( r );
+        load.points = readSelection( r, false );
         load.traction_pa = r.point( "traction_pa", "Pa", Need::Required )
                                .value_or( load.traction_pa );
         load.length_m =
@@ -268,65 +311,6 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                 .value_or( load.length_m );
         load.time_function = readTimeFunction( r );
         result.push_back( load );
-    }
-    return result;
-}
-
-//---------------------------------------------------------------------------//
-std::vector<WaterInflow> readInflows( const toml::array& array,
-                                      const std::string& prefix,
-                                      Diagnostics& diag )
-{
-    std::vector<WaterInflow> result;
-    for ( std::size_t k = 0; k < array.size(); ++k )
-    {
-        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
-                       diag );
-        r.checkKeys( { "where", "box_m", "flux_m_per_s", "length_m",
-                       "time_function", "ponding", "follow_surface_s" },
-                     "[[stages.inflows]]" );
-        WaterInflow inflow;
-        inflow.points = readSelection( r );
-        inflow.flux_m_per_s =
-            r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
-                      "m/s (rainfall intensity, volume per area and time)",
-                      Need::Required )
-                .value_or( 0.0 );
-        const toml::node* follow = r.find( "follow_surface_s" );
-        if ( follow )
-        {
-            inflow.follow_surface_interval_s =
-                r.number( "follow_surface_s", Range::above( 0.0 ),
-                          "s (how often the surface is re-detected)",
-                          Need::Required )
-                    .value_or( 0.0 );
-            if ( inflow.points.kind != PointSelection::Kind::SurfaceCells )
-                diag.keyError( *follow, r.keyPath( "follow_surface_s" ),
-                               "a rainfall that follows the surface needs "
-                               "where = \"surface_cells\"" );
-            if ( const toml::node* length = r.find( "length_m" ) )
-                diag.keyError( *length, r.keyPath( "length_m" ),
-                               "not allowed with follow_surface_s: the "
-                               "length is the surface's current horizontal "
-                               "projection" );
-        }
-        else if ( inflow.onGridEdge() )
-        {
-            if ( const toml::node* length = r.find( "length_m" ) )
-                diag.keyError( *length, r.keyPath( "length_m" ),
-                               "not allowed on a grid edge: the flux acts "
-                               "on the edge's nodes that touch soil" );
-        }
-        else
-            inflow.length_m =
-                r.number( "length_m", Range::above( 0.0 ),
-                          "m (the length of surface receiving the flux)",
-                          Need::Required )
-                    .value_or( inflow.length_m );
-        inflow.time_function = readTimeFunction( r );
-        inflow.ponding =
-            r.boolean( "ponding", Need::Optional ).value_or( inflow.ponding );
-        result.push_back( inflow );
     }
     return result;
 }

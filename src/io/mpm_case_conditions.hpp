@@ -17,17 +17,19 @@ namespace Impl
 //---------------------------------------------------------------------------//
 // Boundary conditions on grid nodes ([[boundaries]], [[stages.boundaries]])
 // and the conditions of a stage on material points ([[stages.pore_pressures]],
-// [[stages.loads]]). Internal to the case reader.
+// [[stages.loads]], [[stages.inflows]]). Internal to the case reader.
 //---------------------------------------------------------------------------//
 
 /*!
   \brief Read an array of boundary tables at prefix ("boundaries" or
   "stages[k].boundaries"), including the hydraulic condition of two-phase
-  analyses and purely hydraulic boundaries (condition = "none").
+  analyses and purely hydraulic boundaries (condition = "none"). With a
+  grid, polyline points outside it are warned about.
 */
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,
+                                            const GridConfig* grid,
                                             Diagnostics& diag );
 
 //---------------------------------------------------------------------------//
@@ -42,10 +44,22 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix,
                                   Diagnostics& diag );
 
-//! [[stages.inflows]]: prescribed water inflow (rainfall) on points.
+/*!
+  \brief [[stages.inflows]]: prescribed water inflow (rainfall) on points,
+  a grid edge or a polyline (mpm_case_inflows.cpp); with a grid, polyline
+  points outside it are warned about.
+*/
 std::vector<WaterInflow> readInflows( const toml::array& array,
                                       const std::string& prefix,
+                                      const GridConfig* grid,
                                       Diagnostics& diag );
+
+//! where (and box_m) of a condition on material points; "polyline" only
+//! if polyline_allowed (its polyline_m is read by the caller).
+PointSelection readSelection( TableReader& r, bool polyline_allowed );
+
+//! time_function = [[t_s, factor], ...]: optional, empty if not given.
+TimeFunction readTimeFunction( TableReader& r );
 
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );

@@ -251,13 +251,16 @@ class Diagnostics
     //! (an included file) or, if unknown, the case file.
     void error( const toml::source_region& where, const std::string& text )
     {
-        const std::string file =
-            where.path ? std::string( *where.path ) : _file_name;
-        _entries.push_back( { file, static_cast<int>( where.begin.line ),
-                              static_cast<int>( where.begin.column ),
-                              file + ":" + std::to_string( where.begin.line ) +
-                                  ":" + std::to_string( where.begin.column ) +
-                                  ": error: " + text } );
+        _entries.push_back( entry( where, "error", text ) );
+    }
+
+    //! \brief Record a warning "key 'path': text" at the position of a
+    //! node (not an error: empty() and report() ignore it).
+    void keyWarning( const toml::node& node, const std::string& path,
+                     const std::string& text )
+    {
+        _warnings.push_back(
+            entry( node.source(), "warning", "key '" + path + "': " + text ) );
     }
 
     //! \brief Record "key 'path': text" at the position of a node.
@@ -290,19 +293,7 @@ class Diagnostics
     //! files), one per line (at most 20 shown).
     std::string report() const
     {
-        auto sorted = _entries;
-        std::stable_sort( sorted.begin(), sorted.end(),
-                          [this]( const Entry& a, const Entry& b )
-                          {
-                              const bool a_main = a.file == _file_name;
-                              const bool b_main = b.file == _file_name;
-                              if ( a_main != b_main )
-                                  return a_main;
-                              if ( a.file != b.file )
-                                  return a.file < b.file;
-                              return a.line != b.line ? a.line < b.line
-                                                      : a.column < b.column;
-                          } );
+        const auto sorted = inFileOrder( _entries );
         const std::size_t shown = std::min<std::size_t>( sorted.size(), 20 );
         std::string text;
         for ( std::size_t i = 0; i < shown; ++i )
@@ -311,6 +302,15 @@ class Diagnostics
             text += "\n(" + std::to_string( sorted.size() - shown ) +
                     " more errors not shown)";
         return text;
+    }
+
+    //! \brief The warnings in file order, one line each.
+    std::vector<std::string> warnings() const
+    {
+        std::vector<std::string> lines;
+        for ( const Entry& warning : inFileOrder( _warnings ) )
+            lines.push_back( warning.text );
+        return lines;
     }
 
     const std::string& fileName() const { return _file_name; }
@@ -323,8 +323,43 @@ class Diagnostics
         int column;
         std::string text;
     };
+
+    //! "file:line:column: <kind>: text" at a source region (its file, or
+    //! the case file if unknown).
+    Entry entry( const toml::source_region& where, const std::string& kind,
+                 const std::string& text ) const
+    {
+        const std::string file =
+            where.path ? std::string( *where.path ) : _file_name;
+        return { file, static_cast<int>( where.begin.line ),
+                 static_cast<int>( where.begin.column ),
+                 file + ":" + std::to_string( where.begin.line ) + ":" +
+                     std::to_string( where.begin.column ) + ": " + kind + ": " +
+                     text };
+    }
+
+    //! Entries sorted: the case file first, then included files, each by
+    //! line and column.
+    std::vector<Entry> inFileOrder( std::vector<Entry> sorted ) const
+    {
+        std::stable_sort( sorted.begin(), sorted.end(),
+                          [this]( const Entry& a, const Entry& b )
+                          {
+                              const bool a_main = a.file == _file_name;
+                              const bool b_main = b.file == _file_name;
+                              if ( a_main != b_main )
+                                  return a_main;
+                              if ( a.file != b.file )
+                                  return a.file < b.file;
+                              return a.line != b.line ? a.line < b.line
+                                                      : a.column < b.column;
+                          } );
+        return sorted;
+    }
+
     std::string _file_name;
     std::vector<Entry> _entries;
+    std::vector<Entry> _warnings;
 };
 
 } // namespace Impl

@@ -6,6 +6,7 @@
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_case_materials.hpp>
 #include <io/mpm_case_overrides.hpp>
+#include <io/mpm_case_pore_pressure.hpp>
 #include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_case_shapes.hpp>
@@ -63,8 +64,8 @@ class CaseParser
         parseBodies( root );
         if ( const auto* arr = root.tableArray( "boundaries", Need::Optional,
                                                 "[[boundaries]]" ) )
-            _config.boundaries =
-                Impl::readBoundaries( *arr, "boundaries", _analysis, _diag );
+            _config.boundaries = Impl::readBoundaries(
+                *arr, "boundaries", _analysis, grid(), _diag );
         parseSolver( root );
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )
@@ -73,6 +74,12 @@ class CaseParser
     }
 
   private:
+    //! The grid if [grid] was read without errors, else null.
+    const GridConfig* grid() const
+    {
+        return _grid_ok ? &_config.grid : nullptr;
+    }
+
     //! Report a reference to a material that is not defined.
     void unknownMaterial( const toml::source_region& where,
                           const std::string& path, const std::string& name )
@@ -263,7 +270,8 @@ class CaseParser
             const std::string path = "bodies[" + std::to_string( k ) + "]";
             TableReader r( *arr->get( k )->as_table(), path, _diag );
             r.checkKeys( { "material", "polygon_m", "initial_pore_pressure_pa",
-                           "initial_pore_pressure_gradient_pa_per_m" },
+                           "initial_pore_pressure_gradient_pa_per_m",
+                           "initial_pore_pressure_profile" },
                          "[[bodies]]" );
             BodyConfig body;
             if ( const auto name = r.string( "material", Need::Required ) )
@@ -282,18 +290,7 @@ class CaseParser
                     _grid_ok ? &_config.grid : nullptr, _diag );
                 body.polygon_m = *polygon;
             }
-            if ( !Impl::rejectIfDry( r, "initial_pore_pressure_pa",
-                                     _analysis ) )
-                body.initial_pore_pressure_pa =
-                    r.number( "initial_pore_pressure_pa", Range::any(),
-                              "Pa (p_w at y = 0)", Need::Optional )
-                        .value_or( 0.0 );
-            if ( !Impl::rejectIfDry(
-                     r, "initial_pore_pressure_gradient_pa_per_m", _analysis ) )
-                body.initial_pore_pressure_gradient_pa_per_m =
-                    r.number( "initial_pore_pressure_gradient_pa_per_m",
-                              Range::any(), "Pa/m (dp_w/dy)", Need::Optional )
-                        .value_or( 0.0 );
+            Impl::readInitialPorePressure( r, _analysis, body );
             _config.bodies.push_back( body );
         }
     }
@@ -428,12 +425,12 @@ class CaseParser
             if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
                                                "[[stages.boundaries]]" ) )
                 stage.boundaries = Impl::readBoundaries(
-                    *b, path + ".boundaries", _analysis, _diag );
+                    *b, path + ".boundaries", _analysis, grid(), _diag );
             if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
                 if ( const auto* f = r.tableArray( "inflows", Need::Optional,
                                                    "[[stages.inflows]]" ) )
-                    stage.inflows =
-                        Impl::readInflows( *f, path + ".inflows", _diag );
+                    stage.inflows = Impl::readInflows( *f, path + ".inflows",
+                                                       grid(), _diag );
             if ( !Impl::rejectIfDry( r, "pore_pressures", _analysis ) )
                 if ( const auto* p =
                          r.tableArray( "pore_pressures", Need::Optional,
@@ -563,6 +560,7 @@ CaseConfig parseCase( const std::string& toml_text,
         throw CaseError( diag.report() );
     config.fingerprint = caseFingerprint( root );
     config.overrides = overrides;
+    config.warnings = diag.warnings();
     return config;
 }
 

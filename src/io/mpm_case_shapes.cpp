@@ -1,6 +1,7 @@
 #include <io/mpm_case_shapes.hpp>
 #include <setup/mpm_geometry.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -90,25 +91,65 @@ void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
 }
 
 //---------------------------------------------------------------------------//
-std::string outsideGridText( const GridConfig& g, const Point2& point )
+namespace
 {
-    const double tol = 1e-9 * g.cell_size_m;
-    auto upper = [&]( const int d )
-    { return g.origin_m[d] + g.cells[d] * g.cell_size_m; };
-    bool inside = true;
-    for ( int d = 0; d < 2; ++d )
-        inside = inside && point[d] >= g.origin_m[d] - tol &&
-                 point[d] <= upper( d ) + tol;
-    if ( inside )
-        return "";
+//! Upper end of the grid along direction d, m.
+double gridUpper( const GridConfig& g, const int d )
+{
+    return g.origin_m[d] + g.cells[d] * g.cell_size_m;
+}
+
+//! "x in [x0, x1] m and y in [y0, y1] m": the grid's extent.
+std::string gridSpanText( const GridConfig& g )
+{
     auto span = [&]( const int d )
     {
         return "[" + formatNumber( g.origin_m[d] ) + ", " +
-               formatNumber( upper( d ) ) + "]";
+               formatNumber( gridUpper( g, d ) ) + "]";
     };
-    return "inside the grid, x in " + span( 0 ) + " m and y in " + span( 1 ) +
-           " m (grid.origin_m + grid.cells * grid.cell_size_m), found " +
+    return "x in " + span( 0 ) + " m and y in " + span( 1 ) + " m";
+}
+} // namespace
+
+std::string outsideGridText( const GridConfig& g, const Point2& point )
+{
+    const double tol = 1e-9 * g.cell_size_m;
+    bool inside = true;
+    for ( int d = 0; d < 2; ++d )
+        inside = inside && point[d] >= g.origin_m[d] - tol &&
+                 point[d] <= gridUpper( g, d ) + tol;
+    if ( inside )
+        return "";
+    return "inside the grid, " + gridSpanText( g ) +
+           " (grid.origin_m + grid.cells * grid.cell_size_m), found " +
            pointText( point ) + " m";
+}
+
+//---------------------------------------------------------------------------//
+void warnPolylineOutsideGrid( const std::vector<Point2>& line,
+                              const toml::node& node, const std::string& path,
+                              const GridConfig& grid,
+                              const std::string& consequence,
+                              Diagnostics& diag )
+{
+    std::size_t first = line.size(), outside = 0;
+    for ( std::size_t k = 0; k < line.size(); ++k )
+        if ( !outsideGridText( grid, line[k] ).empty() )
+        {
+            first = std::min( first, k );
+            ++outside;
+        }
+    if ( outside == 0 )
+        return;
+    const auto* arr = node.as_array();
+    const toml::node& at =
+        arr && first < arr->size() ? *arr->get( first ) : node;
+    diag.keyWarning(
+        at, indexed( path, first ),
+        "the point " + pointText( line[first] ) + " m lies outside the grid (" +
+            std::to_string( outside ) + " of the " +
+            std::to_string( line.size() ) + " points do; the grid spans " +
+            gridSpanText( grid ) + "); " + consequence );
 }
 
 //---------------------------------------------------------------------------//

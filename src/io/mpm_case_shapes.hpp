@@ -34,6 +34,18 @@ void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
 std::string outsideGridText( const GridConfig& grid, const Point2& point );
 
 //---------------------------------------------------------------------------//
+/*!
+  \brief Warn (not an error) if points of a polyline read from node lie
+  outside the grid: one warning at the first such point, counting them,
+  with `consequence` (what the line does there) appended.
+*/
+void warnPolylineOutsideGrid( const std::vector<Point2>& line,
+                              const toml::node& node, const std::string& path,
+                              const GridConfig& grid,
+                              const std::string& consequence,
+                              Diagnostics& diag );
+
+//---------------------------------------------------------------------------//
 //! \brief Check that the x of a boundary polyline increase strictly.
 void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
                     const std::string& path, Diagnostics& diag );

@@ -1,0 +1,179 @@
+// The hydraulic keys of issue 12 in a case file: a tabulated initial
+// pore-pressure profile, a held pore pressure on every point, rain on a
+// polyline (its length derived), and the warnings of the reader and of the
+// point check.
+#include <io/mpm_case_reader.hpp>
+#include <setup/mpm_point_check.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace
+{
+//! A saturated case: `body` in its [[bodies]] table, `boundary` and
+//! `stage` appended after the gravity stage's keys.
+std::string hydraulicCase( const std::string& body, const std::string& stage )
+{
+    return R"([case]
+name = "hydraulic"
+analysis = "saturated"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.5
+cells = [20, 10]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 2700.0
+porosity = 0.3
+permeability_m2 = 4.5e-9
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.33
+[[bodies]]
+material = "soil"
+polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 3.0], [0.0, 3.0]]
+)" + body + R"(
+[[boundaries]]
+where = "below_polyline"
+condition = "fixed"
+polyline_m = [[-1.0, 0.2], [10.0, 0.2]]
+[[stages]]
+name = "gravity"
+type = "quasi_static"
+duration_s = 1.0
+)" + stage;
+}
+
+const char* const profile_body =
+    "initial_pore_pressure_profile = [[0.0, 19620.0], [2.0, 0.0], "
+    "[3.0, -29430.0]]\n";
+
+const char* const hydraulic_stage = R"(
+[[stages.pore_pressures]]
+where = "all"
+hold = "initial"
+[[stages.inflows]]
+where = "polyline"
+polyline_m = [[0.0, 3.0], [4.0, 3.0], [8.0, 6.0]]
+flux_m_per_s = 1.0e-5
+[[stages.inflows]]
+where = "polyline"
+measured_on = "horizontal"
+polyline_m = [[0.0, 3.0], [4.0, 3.0], [8.0, 6.0], [12.0, 6.0]]
+flux_m_per_s = 2.0e-5
+ponding = false
+)";
+
+//---------------------------------------------------------------------------//
+TEST( HydraulicKeys, profile_hold_and_polyline_inflow_are_read )
+{
+    const mpm::CaseConfig c = mpm::parseCase(
+        hydraulicCase( profile_body, hydraulic_stage ), "h.toml" );
+    const std::vector<std::array<double, 2>> profile = {
+        { 0.0, 19620.0 }, { 2.0, 0.0 }, { 3.0, -29430.0 } };
+    EXPECT_EQ( c.bodies[0].initial_pore_pressure_profile, profile );
+    ASSERT_EQ( c.stages[0].pore_pressures.size(), 1u );
+    const mpm::PorePressureCondition& held = c.stages[0].pore_pressures[0];
+    EXPECT_TRUE( held.hold_initial );
+    EXPECT_EQ( held.points.kind, mpm::PointSelection::Kind::All );
+    EXPECT_TRUE( held.time_function.empty() );
+
+    ASSERT_EQ( c.stages[0].inflows.size(), 2u );
+    const mpm::WaterInflow& along = c.stages[0].inflows[0];
+    EXPECT_EQ( along.points.kind, mpm::PointSelection::Kind::Polyline );
+    EXPECT_FALSE( along.onGridEdge() );
+    EXPECT_EQ( along.points.polyline_measure, mpm::LineMeasure::AlongLine );
+    EXPECT_EQ( along.points.polyline_m.size(), 3u );
+    EXPECT_DOUBLE_EQ( along.length_m, 4.0 + 5.0 ); // 4 m, then a 3-4-5
+    EXPECT_TRUE( along.ponding );
+    const mpm::WaterInflow& level = c.stages[0].inflows[1];
+    EXPECT_EQ( level.points.polyline_measure, mpm::LineMeasure::Horizontal );
+    EXPECT_DOUBLE_EQ( level.length_m, 12.0 );
+    EXPECT_FALSE( level.ponding );
+}
+
+// Polyline points outside the grid are warnings at the point, with the
+// file, line and column, in file order; the case is read.
+TEST( HydraulicKeys, polyline_points_outside_the_grid_are_warnings )
+{
+    const mpm::CaseConfig c = mpm::parseCase(
+        hydraulicCase( profile_body, hydraulic_stage ), "h.toml" );
+    ASSERT_EQ( c.warnings.size(), 3u );
+    const std::string grid =
+        "the grid spans x in [0, 10] m and y in [0, 5] m); ";
+    EXPECT_EQ( c.warnings[0],
+               "h.toml:24:15: warning: key 'boundaries[0].polyline_m[0]': the "
+               "point (-1, 0.2) m lies outside the grid (1 of the 2 points "
+               "do; " +
+                   grid +
+                   "it selects only the grid's nodes below it, the line "
+                   "extended horizontally beyond its ends" );
+    const std::string inflow_tail =
+        "its pieces outside the grid feed no cell: their flux goes to the "
+        "cells the line crosses inside it";
+    EXPECT_EQ( c.warnings[1],
+               "h.toml:35:39: warning: key 'stages[0].inflows[0].polyline_m[2]"
+               "': the point (8, 6) m lies outside the grid (1 of the 3 points "
+               "do; " +
+                   grid + inflow_tail );
+    EXPECT_EQ( c.warnings[2],
+               "h.toml:40:39: warning: key 'stages[0].inflows[1].polyline_m[2]"
+               "': the point (8, 6) m lies outside the grid (2 of the 4 points "
+               "do; " +
+                   grid + inflow_tail );
+}
+
+// The case's identity (the checkpoint's fingerprint) covers the new keys.
+TEST( HydraulicKeys, fingerprint_covers_the_new_keys )
+{
+    const std::string base = hydraulicCase( profile_body, hydraulic_stage );
+    const std::string fingerprint =
+        mpm::parseCase( base, "h.toml" ).fingerprint;
+    const auto changed = [&]( const std::string& from, const std::string& to )
+    {
+        std::string text = base;
+        text.replace( text.find( from ), from.size(), to );
+        return mpm::parseCase( text, "h.toml" ).fingerprint;
+    };
+    EXPECT_NE( changed( "[3.0, -29430.0]", "[3.0, -29000.0]" ), fingerprint );
+    EXPECT_NE( changed( "measured_on = \"horizontal\"",
+                        "measured_on = \"along_line\"" ),
+               fingerprint );
+    EXPECT_NE( changed( "[8.0, 6.0]]", "[8.0, 5.0]]" ), fingerprint );
+}
+
+// The point check warns of selections that pick none of the initial
+// points (here a box above the soil in the second stage), not of those
+// that pick some.
+TEST( HydraulicKeys, point_check_warns_of_empty_selections )
+{
+    const std::string stages = std::string( hydraulic_stage ) + R"(
+[[stages]]
+name = "rain"
+type = "dynamic"
+duration_s = 1.0
+[[stages.pore_pressures]]
+where = "box"
+box_m = [[0.0, 4.0], [10.0, 5.0]]
+pressure_pa = 0.0
+[[stages.inflows]]
+where = "polyline"
+polyline_m = [[0.0, 4.5], [10.0, 4.5]]
+flux_m_per_s = 1.0e-5
+)";
+    const mpm::CaseConfig c =
+        mpm::parseCase( hydraulicCase( profile_body, stages ), "h.toml" );
+    const mpm::PointFindings findings = mpm::checkPoints( c );
+    EXPECT_TRUE( findings.refusals.empty() );
+    const std::string tail = "': selects no material point at the points' "
+                             "initial positions (the run checks again at the "
+                             "stage start)";
+    EXPECT_EQ( findings.warnings,
+               std::vector<std::string>(
+                   { "key 'stages[1].pore_pressures[0].where" + tail,
+                     "key 'stages[1].inflows[0].where" + tail } ) );
+}
+
+} // namespace
