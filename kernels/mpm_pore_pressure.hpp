@@ -40,9 +40,11 @@ struct RetentionAt
   the mass-conservative Eq. 8 (explicit when saturated), prescribed point
   pressures, porosity from Eq. 2 as n' = 1 - (1 - n) / det(I + L dt), then S,
   dS/dp_w, k_rel. `prescribed_p_w(c)` is the current pressure of condition c,
-  Pa; `inflow_rate(f)` the water volume inflow f adds per unit point volume and
-  time (1/s), a source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on its points
-  (the excess runs off). With `retention_current`, the stored S_p, dS_dp_p and
+  Pa, unless `prescribed_hold(c)`: then its points keep p_w_held_p (their p_w
+  at the stage start); `inflow_rate(f)` the water volume inflow f adds per
+  unit point volume and time (1/s), times the point's inflow_weight_p, a
+  source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on its points (the
+  excess runs off). With `retention_current`, the stored S_p, dS_dp_p and
   k_rel_p are the retention law's values at p_w_p (true after an unsaturated
   update with the same materials), which saves one retention evaluation per
   point, and all of them where p_w is held. Updates up to `lanes` points at
@@ -59,9 +61,10 @@ struct PorePressurePointUpdate
     physics::WaterParams water;
     bool saturated;
     bool retention_current;
-    scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p;
+    scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p, p_w_held_p, inflow_weight_p;
     int_view condition_p, inflow_p;
     UnmanagedView<PressureView> prescribed_p_w;
+    UnmanagedView<FlagView> prescribed_hold;
     UnmanagedView<RateView> inflow_rate;
     UnmanagedView<FlagView> inflow_ponding;
 
@@ -85,7 +88,9 @@ struct PorePressurePointUpdate
             const double S = S_p( q );
             // Water volume change per unit volume over the step (Eq. 8).
             const int inflow = inflow_p( q );
-            const double source = inflow >= 0 ? inflow_rate( inflow ) : 0.0;
+            const double source =
+                inflow >= 0 ? inflow_rate( inflow ) * inflow_weight_p( q )
+                            : 0.0;
             const double volume_change =
                 kinematics.dt * ( source - water_rate[l] );
             retention[l] = RetentionAt{ params[l]->retention };
@@ -112,7 +117,9 @@ struct PorePressurePointUpdate
             if ( inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0 )
                 p_w = 0.0;
             if ( condition >= 0 )
-                p_w = prescribed_p_w( condition );
+                p_w = prescribed_hold( condition )
+                          ? p_w_held_p( q )
+                          : prescribed_p_w( condition );
             p_w_p( q ) = p_w;
             // Eq. 2 integrated over the step: (1 - n) V is constant.
             n_p( q ) = 1.0 - ( 1.0 - point.n ) / kinematics.volumeRatio( L[l] );
@@ -135,6 +142,7 @@ porePressurePointUpdate( const WaterParticleViews<ExecSpace>& wv,
                          const physics::WaterParams& water, const double dt,
                          const bool saturated, const bool retention_current,
                          const PressureView& prescribed_p_w,
+                         const FlagView& prescribed_hold,
                          const RateView& inflow_rate,
                          const FlagView& inflow_ponding )
 {
@@ -147,9 +155,12 @@ porePressurePointUpdate( const WaterParticleViews<ExecSpace>& wv,
              wv.dS_dp_p,
              wv.k_rel_p,
              wv.n_p,
+             wv.p_w_held_p,
+             wv.inflow_weight_p,
              wv.p_w_condition_p,
              wv.inflow_p,
              prescribed_p_w,
+             prescribed_hold,
              inflow_rate,
              inflow_ponding };
 }

@@ -186,17 +186,24 @@ int main( int argc, char* argv[] )
         std::cerr << "  " << mpm::estimateSummary( estimate ) << "\n";
         return exit_bad_input;
     }
-    // Errors that show only once the points exist (as a run makes them).
+    // Warnings of the reader (a valid case, probably not as meant).
+    for ( const std::string& warning : config.warnings )
+        std::cerr << warning << "\n";
+    // Errors that show only once the points exist (as a run makes them);
+    // their warnings only for `check`: a run warns at each stage start.
     double vertices = 0.0;
     for ( const mpm::BodyConfig& body : config.bodies )
         vertices += static_cast<double>( body.polygon_m.size() );
     if ( estimate.points * vertices <= max_point_tests )
     {
-        const auto point_errors = mpm::pointRefusals( config );
-        for ( const std::string& error : point_errors )
+        const mpm::PointFindings findings = mpm::checkPoints( config );
+        for ( const std::string& error : findings.refusals )
             std::cerr << config.file << ": error: " << error << "\n";
-        if ( !point_errors.empty() )
+        if ( !findings.refusals.empty() )
             return exit_bad_input;
+        if ( check->parsed() )
+            for ( const std::string& warning : findings.warnings )
+                std::cerr << config.file << ": warning: " << warning << "\n";
     }
     if ( check->parsed() )
     {

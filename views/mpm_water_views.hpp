@@ -32,6 +32,13 @@ struct WaterParticleViews
     int_view p_w_condition_p;
     //! Index of the water inflow feeding the point, -1 if none.
     int_view inflow_p;
+    //! The point's p_w at the start of a stage that holds it (a
+    //! pore-pressure condition with hold = "initial"), Pa.
+    scalar_view p_w_held_p;
+    //! The point's share of its inflow relative to an even share by
+    //! volume: 1, except on a polyline, where each cell takes the water of
+    //! its piece of the line.
+    scalar_view inflow_weight_p;
 
     WaterParticleViews() = default;
 
@@ -45,6 +52,8 @@ struct WaterParticleViews
         , div_v_w_p( "div_v_w_p", num_points )
         , p_w_condition_p( "p_w_condition_p", num_points )
         , inflow_p( "inflow_p", num_points )
+        , p_w_held_p( "p_w_held_p", num_points )
+        , inflow_weight_p( "inflow_weight_p", num_points )
     {
     }
 

@@ -56,6 +56,8 @@ void forEachWaterParticleView( Views& wv, F&& f )
     f( "div_v_w_p", wv.div_v_w_p );
     f( "p_w_condition_p", wv.p_w_condition_p );
     f( "inflow_p", wv.inflow_p );
+    f( "p_w_held_p", wv.p_w_held_p );
+    f( "inflow_weight_p", wv.inflow_weight_p );
 }
 
 //! Calls f(name, view) for every View of GridViews.

@@ -100,6 +100,11 @@ class OutputObserver : public RunObserver
     {
         _printer.stageEnd( progress, summary );
     }
+    //! "<case file>: warning: <text>" on stderr.
+    void onWarning( const std::string& text ) override
+    {
+        std::cerr << case_file << ": warning: " << text << "\n";
+    }
     bool stopRequested() override
     {
         return interruptRequested() ||
@@ -148,6 +153,7 @@ class OutputObserver : public RunObserver
                std::chrono::duration<double>( clock::now() - _start ).count();
     }
 
+    std::string case_file; //!< names the case in warnings
     HostSnapshot last_snapshot;
     //! p_w extremes over this session's snapshots (two-phase).
     PorePressureExtremes pore_pressure;
@@ -279,6 +285,7 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                              resumed ? resumed->wall_s : 0.0,
                              options.stop_after_steps );
     observer.probes = &probes;
+    observer.case_file = config.file;
     installInterruptHandler();
 
     nlohmann::json metrics = {

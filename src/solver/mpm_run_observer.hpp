@@ -76,6 +76,9 @@ class RunObserver
     //! solver.checkpoint_interval_s and at a stop). Writing it is up to the
     //! observer, which completes the outputs' part first (snapshots, wall_s).
     virtual void onCheckpoint( Checkpoint& ) {}
+    //! Called with a warning about the case ("key '...': ..."), e.g. a
+    //! point selection that picks no point at its stage's start.
+    virtual void onWarning( const std::string& ) {}
 };
 
 } // namespace mpm

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace mpm
@@ -200,6 +201,8 @@ inline bool checkpointDue( const SolverConfig& solver,
   an interrupted one. Checkpoints go to observer.onCheckpoint every
   solver.checkpoint_interval_s of run time and when stopRequested() stops
   the run; both are taken before a step, the only point a run resumes at.
+  A stage's point selections that pick no point at its start go to
+  observer.onWarning.
 */
 template <class ExecSpace>
 RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
@@ -225,6 +228,11 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             sim.applyStage( stage );
             state.beginStage( state.stage, stage.name, stage.duration_s,
                               quasi_static, schedule.next( 0.0 ) );
+            for ( const std::string& key : sim.conditions.empty_selections )
+                observer.onWarning( "key 'stages[" +
+                                    std::to_string( state.stage ) + "]." + key +
+                                    "': selects no material point at the "
+                                    "stage start" );
         }
         const StepSettings settings{ stage.gravity_m_per_s2[0],
                                      stage.gravity_m_per_s2[1], stage.damping };

@@ -348,8 +348,8 @@ class Simulation
         const bool saturated = analysis == AnalysisType::Saturated;
         const auto pore_pressure = porePressurePointUpdate(
             water_particles, water, dt, saturated, _retention_current,
-            conditions.prescribed_p_w, conditions.inflow_rate,
-            conditions.inflow_ponding );
+            conditions.prescribed_p_w, conditions.prescribed_hold,
+            conditions.inflow_rate, conditions.inflow_ponding );
         const PointUpdateReport report = updatePointsTwoPhase(
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,

@@ -10,6 +10,7 @@
 #include <setup/mpm_conditions.hpp>
 #include <setup/mpm_materials.hpp>
 #include <setup/mpm_particle_generator.hpp>
+#include <solver/mpm_stage_conditions.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -42,7 +43,7 @@ inline physics::WaterParams waterParams( const WaterConfig& config )
   \brief Initial state of the points: positions, volumes, materials, ids;
   dry: mass = bulk density x volume; two-phase: mass = solid mass
   (1 - n0) rho_s V, porosity n0, pore pressure from the body's initial
-  p_w(y) and the retention state at it.
+  p_w(y) (initialPorePressure) and the retention state at it.
 */
 template <class ExecSpace>
 void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
@@ -90,10 +91,8 @@ void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
     auto n_h = Kokkos::create_mirror_view( wv.n_p );
     for ( int p = 0; p < points.size(); ++p )
     {
-        const BodyConfig& body = config.bodies[points.body[p]];
-        const double p_w =
-            body.initial_pore_pressure_pa +
-            body.initial_pore_pressure_gradient_pa_per_m * points.x[2 * p + 1];
+        const double p_w = initialPorePressure( config.bodies[points.body[p]],
+                                                points.x[2 * p + 1] );
         const physics::MaterialParams& params = table[points.material[p]];
         physics::RetentionState state{ 1.0, 0.0, 1.0 };
         if ( config.analysis == AnalysisType::Unsaturated )
@@ -105,289 +104,16 @@ void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
         n_h( p ) = config.materials[points.material[p]].porosity;
     }
     Kokkos::deep_copy( wv.p_w_p, p_w_h );
+    Kokkos::deep_copy( wv.p_w_held_p, p_w_h );
     Kokkos::deep_copy( wv.S_p, S_h );
     Kokkos::deep_copy( wv.dS_dp_p, dS_h );
     Kokkos::deep_copy( wv.k_rel_p, k_rel_h );
     Kokkos::deep_copy( wv.n_p, n_h );
     Kokkos::deep_copy( wv.p_w_condition_p, -1 );
     Kokkos::deep_copy( wv.inflow_p, -1 );
+    Kokkos::deep_copy( wv.inflow_weight_p, 1.0 );
     (void)water;
 }
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Prescribed point pore pressures and point loads of the current
-  stage: which condition each point belongs to (chosen at the stage start
-  from the current positions) and the current values of each condition.
-*/
-template <class ExecSpace>
-struct StageConditions
-{
-    using device_type = DeviceType<ExecSpace>;
-    //! Current pressure of each pore-pressure condition, Pa.
-    Kokkos::View<double*, device_type> prescribed_p_w{ "prescribed_p_w", 0 };
-    //! Current force on one point of each load group, N.
-    LoadForceView<ExecSpace> load_force{ "load_force", 0 };
-    //! Current water inflow of each inflow per unit point volume, 1/s.
-    Kokkos::View<double*, device_type> inflow_rate{ "inflow_rate", 0 };
-    //! 1 if the inflow ponds (caps p_w at 0 on its points), else 0.
-    Kokkos::View<int*, device_type> inflow_ponding{ "inflow_ponding", 0 };
-    //! Current inward water flux of the inflows on grid edges at each node
-    //! (i, j, direction), m/s (volume per area and time); zero elsewhere.
-    Kokkos::View<double***, device_type> inflow_flux_i{ "inflow_flux_i", 0, 0,
-                                                        0 };
-    std::vector<WaterInflow> inflows;
-    std::vector<double> inflow_volumes; //!< volume of the points fed, m^3/m
-    //! Stage time of the next surface re-detection of the inflows that
-    //! follow the surface (1e300 if none does).
-    double next_surface_update_s = 1.0e300;
-    std::vector<PorePressureCondition> pore_pressures;
-    std::vector<PointLoad> loads;
-    std::vector<int> load_counts;              //!< points per load
-    std::vector<std::vector<int>> load_groups; //!< loads of each group
-
-    //! Assigns the stage's conditions to the points.
-    void apply( const StageConfig& stage, const ParticleViews<ExecSpace>& pv,
-                const WaterParticleViews<ExecSpace>& wv,
-                const GridConfig& grid )
-    {
-        pore_pressures = stage.pore_pressures;
-        loads = stage.loads;
-        const auto x_h =
-            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
-        const auto status_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), pv.status_p );
-        const std::vector<double> x( x_h.data(), x_h.data() + x_h.span() );
-        const std::vector<int> status( status_h.data(),
-                                       status_h.data() + status_h.span() );
-
-        // Loads: a point selected by several loads carries their sum; each
-        // distinct set of loads is one group with its own force.
-        auto load_h = Kokkos::create_mirror( pv.load_p );
-        Kokkos::deep_copy( load_h, -1 );
-        const std::size_t num_points = x.size() / 2;
-        std::vector<std::vector<int>> sets( num_points );
-        load_counts.assign( loads.size(), 0 );
-        for ( std::size_t l = 0; l < loads.size(); ++l )
-        {
-            const auto picked =
-                selectPoints( loads[l].points, x, status, grid );
-            for ( std::size_t p = 0; p < num_points; ++p )
-                if ( picked[p] )
-                {
-                    sets[p].push_back( static_cast<int>( l ) );
-                    ++load_counts[l];
-                }
-        }
-        load_groups.clear();
-        for ( std::size_t p = 0; p < num_points; ++p )
-        {
-            if ( sets[p].empty() )
-                continue;
-            auto it =
-                std::find( load_groups.begin(), load_groups.end(), sets[p] );
-            load_h( p ) = static_cast<int>( it - load_groups.begin() );
-            if ( it == load_groups.end() )
-                load_groups.push_back( sets[p] );
-        }
-        Kokkos::deep_copy( pv.load_p, load_h );
-        load_force =
-            LoadForceView<ExecSpace>( "load_force", load_groups.size() );
-
-        prescribed_p_w = Kokkos::View<double*, device_type>(
-            "prescribed_p_w", pore_pressures.size() );
-        if ( wv.allocated() )
-        {
-            auto condition_h = Kokkos::create_mirror( wv.p_w_condition_p );
-            Kokkos::deep_copy( condition_h, -1 );
-            for ( std::size_t c = 0; c < pore_pressures.size(); ++c )
-            {
-                const auto picked =
-                    selectPoints( pore_pressures[c].points, x, status, grid );
-                for ( std::size_t p = 0; p < picked.size(); ++p )
-                    if ( picked[p] )
-                        condition_h( p ) = static_cast<int>( c );
-            }
-            Kokkos::deep_copy( wv.p_w_condition_p, condition_h );
-            inflows = stage.inflows;
-            inflow_flux_i = Kokkos::View<double***, device_type>(
-                "inflow_flux_i", grid.cells[0] + 1, grid.cells[1] + 1, 2 );
-            _particles = pv;
-            _water_particles = wv;
-            _grid = grid;
-            assignInflows( x, status );
-            next_surface_update_s = _follow_interval_s;
-        }
-        update( 0.0 );
-    }
-
-    /*!
-      \brief Which points each water inflow feeds, and their volumes, from
-      the positions x and status; an inflow that follows the surface gets
-      the horizontal projection of the fed cells as its length. With
-      following_only, only the inflows that follow the surface are
-      selected again; the others keep the points chosen at the stage start.
-    */
-    void assignInflows( const std::vector<double>& x,
-                        const std::vector<int>& status,
-                        const bool following_only = false )
-    {
-        auto follows = [&]( const int f )
-        { return inflows[f].follow_surface_interval_s > 0.0; };
-        const auto vol_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), _particles.vol_p );
-        auto inflow_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), _water_particles.inflow_p );
-        if ( following_only )
-        {
-            for ( std::size_t p = 0; p < inflow_h.extent( 0 ); ++p )
-                if ( inflow_h( p ) >= 0 && follows( inflow_h( p ) ) )
-                    inflow_h( p ) = -1;
-        }
-        else
-        {
-            Kokkos::deep_copy( inflow_h, -1 );
-            inflow_volumes.assign( inflows.size(), 0.0 );
-            inflow_rate = Kokkos::View<double*, device_type>( "inflow_rate",
-                                                              inflows.size() );
-            inflow_ponding = Kokkos::View<int*, device_type>( "inflow_ponding",
-                                                              inflows.size() );
-            auto ponding_h = Kokkos::create_mirror_view( inflow_ponding );
-            _follow_interval_s = 1.0e300;
-            for ( std::size_t f = 0; f < inflows.size(); ++f )
-            {
-                ponding_h( f ) = inflows[f].ponding ? 1 : 0;
-                if ( follows( f ) )
-                    _follow_interval_s =
-                        std::min( _follow_interval_s,
-                                  inflows[f].follow_surface_interval_s );
-            }
-            Kokkos::deep_copy( inflow_ponding, ponding_h );
-        }
-        for ( std::size_t f = 0; f < inflows.size(); ++f )
-        {
-            if ( following_only && !follows( f ) )
-                continue;
-            const auto picked =
-                selectPoints( inflows[f].points, x, status, _grid );
-            inflow_volumes[f] = 0.0;
-            for ( std::size_t p = 0; p < picked.size(); ++p )
-                if ( picked[p] )
-                {
-                    inflow_h( p ) = static_cast<int>( f );
-                    inflow_volumes[f] += vol_h( p );
-                }
-            if ( follows( f ) )
-                inflows[f].length_m = horizontalExtent( picked, x, _grid );
-        }
-        Kokkos::deep_copy( _water_particles.inflow_p, inflow_h );
-    }
-
-    //! Re-detects the surface for the inflows that follow it (stage time t).
-    void followSurface( const double t )
-    {
-        const auto x_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), _particles.x_p );
-        const auto status_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), _particles.status_p );
-        assignInflows(
-            std::vector<double>( x_h.data(), x_h.data() + x_h.span() ),
-            std::vector<int>( status_h.data(),
-                              status_h.data() + status_h.span() ),
-            true );
-        next_surface_update_s = t + _follow_interval_s;
-    }
-
-    //! Values of every condition at stage time t.
-    void update( const double t )
-    {
-        if ( t >= next_surface_update_s )
-            followSurface( t );
-        auto p_h = Kokkos::create_mirror_view( prescribed_p_w );
-        for ( std::size_t c = 0; c < pore_pressures.size(); ++c )
-            p_h( c ) =
-                pore_pressures[c].pressure_pa *
-                evaluateTimeFunction( pore_pressures[c].time_function, t );
-        Kokkos::deep_copy( prescribed_p_w, p_h );
-        auto f_h = Kokkos::create_mirror_view( load_force );
-        for ( std::size_t g = 0; g < load_groups.size(); ++g )
-        {
-            f_h( g, 0 ) = f_h( g, 1 ) = 0.0;
-            for ( const int l : load_groups[g] )
-            {
-                // traction x length shared equally by the load's points.
-                const double scale =
-                    loads[l].length_m *
-                    evaluateTimeFunction( loads[l].time_function, t ) /
-                    load_counts[l];
-                f_h( g, 0 ) += loads[l].traction_pa[0] * scale;
-                f_h( g, 1 ) += loads[l].traction_pa[1] * scale;
-            }
-        }
-        Kokkos::deep_copy( load_force, f_h );
-        auto rate_h = Kokkos::create_mirror_view( inflow_rate );
-        for ( std::size_t f = 0; f < inflows.size(); ++f )
-            rate_h( f ) =
-                inflow_volumes[f] > 0.0 && !inflows[f].onGridEdge()
-                    ? inflows[f].flux_m_per_s * inflows[f].length_m *
-                          evaluateTimeFunction( inflows[f].time_function, t ) /
-                          inflow_volumes[f]
-                    : 0.0;
-        Kokkos::deep_copy( inflow_rate, rate_h );
-        updateEdgeFluxes( t );
-    }
-
-  private:
-    //! inflow_flux_i at stage time t: each edge inflow's flux along the
-    //! inward normal of its edge's nodes.
-    void updateEdgeFluxes( const double t )
-    {
-        bool any = false;
-        for ( const WaterInflow& inflow : inflows )
-            any = any || inflow.onGridEdge();
-        if ( !any )
-            return;
-        auto flux_h = Kokkos::create_mirror_view( inflow_flux_i );
-        // A plain fill: a host deep_copy of a value would start the host
-        // backend's threads on every step.
-        std::fill( flux_h.data(), flux_h.data() + flux_h.span(), 0.0 );
-        const int nx = _grid.cells[0], ny = _grid.cells[1];
-        for ( const WaterInflow& inflow : inflows )
-        {
-            if ( !inflow.onGridEdge() )
-                continue;
-            const double q = inflow.flux_m_per_s *
-                             evaluateTimeFunction( inflow.time_function, t );
-            using Kind = PointSelection::Kind;
-            const Kind kind = inflow.points.kind;
-            const bool vertical =
-                kind == Kind::LeftCells || kind == Kind::RightCells;
-            const int count = vertical ? ny + 1 : nx + 1;
-            for ( int k = 0; k < count; ++k )
-            {
-                const int i = kind == Kind::LeftCells    ? 0
-                              : kind == Kind::RightCells ? nx
-                                                         : k;
-                const int j = kind == Kind::BottomCells ? 0
-                              : kind == Kind::TopCells  ? ny
-                                                        : k;
-                // Inward: down from the top, up from the bottom, ...
-                const double sign =
-                    ( kind == Kind::TopCells || kind == Kind::RightCells )
-                        ? -1.0
-                        : 1.0;
-                flux_h( i, j, vertical ? 0 : 1 ) += sign * q;
-            }
-        }
-        Kokkos::deep_copy( inflow_flux_i, flux_h );
-    }
-
-    // Handles of the points the inflows follow (shallow copies).
-    ParticleViews<ExecSpace> _particles;
-    WaterParticleViews<ExecSpace> _water_particles;
-    GridConfig _grid;
-    double _follow_interval_s = 1.0e300;
-};
 
 } // namespace mpm
 
