@@ -1,6 +1,8 @@
 #ifndef MPM_RUN_OBSERVER_HPP
 #define MPM_RUN_OBSERVER_HPP
 
+#include <physics/mpm_water_volumes.hpp>
+
 #include <string>
 #include <vector>
 
@@ -41,6 +43,8 @@ struct StageSummary
     //! converged), "static_again" (StaticStop) or "interrupted".
     std::string stop_reason = "duration";
     double max_speed_m_per_s = 0.0; //!< largest point speed in the stage
+    //! Two-phase: the stage's water balance (zero in a dry scene).
+    physics::WaterBalance water;
 };
 
 //! Host copies of every particle field, point-major.

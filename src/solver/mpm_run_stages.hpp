@@ -225,6 +225,8 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             sim.applyStage( stage );
             state.beginStage( state.stage, stage.name, stage.duration_s,
                               quasi_static, schedule.next( 0.0 ) );
+            const WaterContent water = sim.waterContent();
+            stage_summary.water.begin( water.active, water.removed );
         }
         const StepSettings settings{ stage.gravity_m_per_s2[0],
                                      stage.gravity_m_per_s2[1], stage.damping };
@@ -263,6 +265,7 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                progress.stage_time_s );
             sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
+            stage_summary.water.addStep( sim.stepWater() );
 
             progress.step = sim.step;
             ++progress.stage_step;
@@ -325,6 +328,8 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
 
         stage_summary.steps = progress.stage_step;
         stage_summary.duration_s = progress.stage_time_s;
+        const WaterContent water = sim.waterContent();
+        stage_summary.water.end( water.active, water.removed );
         observer.onSnapshot( progress, hostSnapshot( sim ) );
         if ( stage.reset_displacement && !summary.interrupted )
             sim.resetDisplacement();
@@ -332,6 +337,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         summary.steps += stage_summary.steps;
         summary.dt_min_s = std::min( summary.dt_min_s, stage_summary.dt_min_s );
         summary.dt_max_s = std::max( summary.dt_max_s, stage_summary.dt_max_s );
+        if ( summary.stages.empty() )
+            summary.water = stage_summary.water;
+        else
+            summary.water.append( stage_summary.water );
         summary.stages.push_back( stage_summary );
         state.stage_started = false;
         if ( summary.interrupted )

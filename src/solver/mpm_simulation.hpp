@@ -16,6 +16,7 @@
 #include <mpm_pore_pressure.hpp>
 #include <mpm_timestep.hpp>
 #include <mpm_velocity_gradient.hpp>
+#include <mpm_water_content.hpp>
 #include <mpm_water_views.hpp>
 #include <setup/mpm_base_slivers.hpp>
 #include <setup/mpm_retention_tables.hpp>
@@ -176,6 +177,7 @@ class Simulation
         num_removed += report.num_removed;
         time += dt;
         ++step;
+        _step_water = report.water;
         _diagnostics = report.diagnostics;
         _diagnostics_step = step;
         if ( report.first_outside >= 0 )
@@ -224,6 +226,16 @@ class Simulation
         return diagnosticsCurrent()
                    ? std::sqrt( _diagnostics.max_speed2 )
                    : mpm::maxPointSpeed( ExecSpace(), particles );
+    }
+
+    //! The water the last step's Eq. 8 moved (zero in a dry scene).
+    const physics::WaterStepVolumes& stepWater() const { return _step_water; }
+
+    //! Water held by the points now (zero in a dry scene).
+    WaterContent waterContent() const
+    {
+        return mpm::waterContent( ExecSpace(), particles, water_particles,
+                                  water );
     }
 
     //! Largest displacement |x - x0| of the active points, m.
@@ -347,9 +359,9 @@ class Simulation
             cellAverages( exec );
         const bool saturated = analysis == AnalysisType::Saturated;
         const auto pore_pressure = porePressurePointUpdate(
-            water_particles, water, dt, saturated, _retention_current,
-            conditions.prescribed_p_w, conditions.inflow_rate,
-            conditions.inflow_ponding );
+            particles, water_particles, water, dt, saturated,
+            _retention_current, conditions.prescribed_p_w,
+            conditions.inflow_rate, conditions.inflow_ponding );
         const PointUpdateReport report = updatePointsTwoPhase(
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,
@@ -408,6 +420,7 @@ class Simulation
     BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).
     StepDiagnostics _diagnostics{ 0.0, 0.0, 0.0, 0.0, 0 };
+    physics::WaterStepVolumes _step_water; //!< of the last step
     long _diagnostics_step = -1;
     //! True if S_p, dS_dp_p are the retention law's values at p_w_p.
     bool _retention_current = false;

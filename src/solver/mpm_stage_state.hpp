@@ -20,6 +20,8 @@ struct RunSummary
     double dt_min_s = 1.0e300;
     double dt_max_s = 0.0;
     bool interrupted = false; //!< stopped by RunObserver::stopRequested
+    //! Two-phase: the water balance of the finished stages.
+    physics::WaterBalance water;
 };
 
 //---------------------------------------------------------------------------//
@@ -87,6 +89,20 @@ struct StageLoopState
 };
 
 //---------------------------------------------------------------------------//
+//! Calls f(name, field) for every field of a physics::WaterBalance.
+template <class Balance, class F>
+void visitWaterBalance( Balance& w, F&& f )
+{
+    f( "stored_start_m3_per_m", w.stored_start );
+    f( "stored_end_m3_per_m", w.stored_end );
+    f( "carried_off_start_m3_per_m", w.carried_off_start );
+    f( "carried_off_end_m3_per_m", w.carried_off_end );
+    f( "point_inflow_m3_per_m", w.point_inflow );
+    f( "runoff_m3_per_m", w.runoff );
+    f( "prescribed_pressure_m3_per_m", w.prescribed );
+    f( "flow_in_m3_per_m", w.flow_in );
+}
+
 //! Calls f(name, field) for every field of a StageSummary.
 template <class Summary, class F>
 void visitStageSummary( Summary& s, F&& f )
@@ -101,6 +117,8 @@ void visitStageSummary( Summary& s, F&& f )
     f( "converged", s.converged );
     f( "stop_reason", s.stop_reason );
     f( "max_speed_m_per_s", s.max_speed_m_per_s );
+    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
+                       { f( "water." + name, value ); } );
 }
 
 //! Calls f(name, field) for every field of a RunProgress.
@@ -128,6 +146,8 @@ void visitRunSummary( Summary& s, F&& f )
     f( "dt_min_s", s.dt_min_s );
     f( "dt_max_s", s.dt_max_s );
     f( "interrupted", s.interrupted );
+    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
+                       { f( "water." + name, value ); } );
 }
 
 /*!
