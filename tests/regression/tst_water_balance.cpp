@@ -1,6 +1,7 @@
 // The water balance of metrics.json (physics::WaterBalance): every term
 // against what the case prescribes, and the closure of the stored water.
 #include <mpm_test_backends.hpp>
+#include <mpm_test_water.hpp>
 
 #include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
@@ -35,36 +36,19 @@ constexpr double K_s = 4.5e-9 * rho_w_g / 1.0e-3; // 0.0441 m/s
 std::string column( const double p_w0, const std::string& base_hydraulic,
                     const double duration, const std::string& stage )
 {
-    char text[2048];
-    std::snprintf( text, sizeof text, R"([case]
+    const std::string grid = R"([case]
 name = "water_balance"
 analysis = "unsaturated"
 [grid]
 origin_m = [0.0, 0.0]
 cell_size_m = 0.1
 cells = [2, 10]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e8
-poisson_ratio = 0.0
-[materials.retention]
-model = "gardner"
-alpha_per_m = 4.0
-residual_saturation = 0.0
-[[bodies]]
+)";
+    char body[512];
+    std::snprintf( body, sizeof body, R"([[bodies]]
 material = "soil"
 polygon_m = [[0.0, 0.0], [%.17g, 0.0], [%.17g, %.17g], [0.0, %.17g]]
 initial_pore_pressure_pa = %.17g
-[[boundaries]]
-where = "left"
-condition = "fix_x"
-[[boundaries]]
-where = "right"
-condition = "fix_x"
 [[boundaries]]
 where = "bottom"
 condition = "fixed"
@@ -76,6 +60,7 @@ duration_s = %.17g
 )",
                    width, width, height, height, p_w0, base_hydraulic.c_str(),
                    duration );
+    const std::string text = grid + mpm_test::gardnerSoilOnRollersToml() + body;
     return text + stage;
 }
 
