@@ -169,6 +169,7 @@ std::vector<double> readSnapshotTimes( TableReader& r )
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,
+                                            const GridConfig* grid,
                                             Diagnostics& diag )
 {
     std::vector<BoundaryConfig> result;
@@ -181,7 +182,8 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             : "[[stages.boundaries]]" );
         BoundaryConfig bc;
         const auto where = r.choice(
-            "where", { "left", "right", "bottom", "top", "below_polyline" },
+            "where",
+            { "left", "right", "bottom", "top", "below_polyline", "polyline" },
             Need::Required );
         const auto condition =
             r.choice( "condition", { "fixed", "fix_x", "fix_y", "none" },
@@ -214,10 +216,19 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                 bc.polyline_m = *line;
             }
         }
+        else if ( where && bc.where == BoundarySelector::Polyline )
+        {
+            if ( auto line = r.points( "polyline_m", 2, "m", Need::Required ) )
+            {
+                checkWallPolyline( *line, *r.find( "polyline_m" ),
+                                   path + ".polyline_m", grid, diag );
+                bc.polyline_m = *line;
+            }
+        }
         else if ( where && r.find( "polyline_m" ) )
             diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
-                           "only for where = \"below_polyline\"; remove "
-                           "it or change 'where'" );
+                           "only for where = \"below_polyline\" or "
+                           "\"polyline\"; remove it or change 'where'" );
         result.push_back( bc );
     }
     return result;

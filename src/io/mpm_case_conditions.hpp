@@ -23,11 +23,14 @@ namespace Impl
 /*!
   \brief Read an array of boundary tables at prefix ("boundaries" or
   "stages[k].boundaries"), including the hydraulic condition of two-phase
-  analyses and purely hydraulic boundaries (condition = "none").
+  analyses and purely hydraulic boundaries (condition = "none"). The
+  vertices of an interior wall (where = "polyline") are checked against
+  `grid` unless it is null (an invalid [grid]).
 */
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,
+                                            const GridConfig* grid,
                                             Diagnostics& diag );
 
 //---------------------------------------------------------------------------//

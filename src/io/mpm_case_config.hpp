@@ -178,11 +178,14 @@ enum class BoundaryCondition
 //! Which grid nodes a boundary condition applies to.
 enum class BoundarySelector
 {
-    Left,         //!< nodes on the grid's left edge
-    Right,        //!< nodes on the grid's right edge
-    Bottom,       //!< nodes on the grid's bottom edge
-    Top,          //!< nodes on the grid's top edge
-    BelowPolyline //!< nodes on or below a polyline y(x) (e.g. a bedrock line)
+    Left,          //!< nodes on the grid's left edge
+    Right,         //!< nodes on the grid's right edge
+    Bottom,        //!< nodes on the grid's bottom edge
+    Top,           //!< nodes on the grid's top edge
+    BelowPolyline, //!< nodes on or below a polyline y(x) (e.g. a bedrock line)
+    //! An interior wall or gate along a polyline in any direction: the
+    //! nodes whose shape function is not zero somewhere on it (wallNodes).
+    Polyline
 };
 
 //! What a boundary prescribes for the pore water (two-phase scenes).
@@ -197,10 +200,14 @@ struct BoundaryConfig
     BoundarySelector where = BoundarySelector::Bottom;
     BoundaryCondition condition = BoundaryCondition::Fixed;
     //! Only for two-phase scenes; grid edges are impermeable by default.
+    //! An impermeable Polyline ties the water to the solid on its nodes;
+    //! a drained one lets the water through (it changes no water tie).
     HydraulicCondition hydraulic = HydraulicCondition::Impermeable;
     //! False for a purely hydraulic boundary (no solid constraint).
     bool constrains_solid = true;
-    //! Only for BelowPolyline: vertices with strictly increasing x, metres.
+    //! BelowPolyline: vertices with strictly increasing x, metres.
+    //! Polyline: the wall's vertices (>= 2, consecutive ones distinct,
+    //! inside the grid), metres. Unused by the other selectors.
     std::vector<Point2> polyline_m;
 };
 

@@ -63,8 +63,9 @@ class CaseParser
         parseBodies( root );
         if ( const auto* arr = root.tableArray( "boundaries", Need::Optional,
                                                 "[[boundaries]]" ) )
-            _config.boundaries =
-                Impl::readBoundaries( *arr, "boundaries", _analysis, _diag );
+            _config.boundaries = Impl::readBoundaries(
+                *arr, "boundaries", _analysis,
+                _grid_ok ? &_config.grid : nullptr, _diag );
         parseSolver( root );
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )
@@ -428,7 +429,8 @@ class CaseParser
             if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
                                                "[[stages.boundaries]]" ) )
                 stage.boundaries = Impl::readBoundaries(
-                    *b, path + ".boundaries", _analysis, _diag );
+                    *b, path + ".boundaries", _analysis,
+                    _grid_ok ? &_config.grid : nullptr, _diag );
             if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
                 if ( const auto* f = r.tableArray( "inflows", Need::Optional,
                                                    "[[stages.inflows]]" ) )
