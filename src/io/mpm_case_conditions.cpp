@@ -342,5 +342,40 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
     return result;
 }
 
+//---------------------------------------------------------------------------//
+StaticStop readStaticStop( const toml::table& table, const std::string& path,
+                           const bool quasi_static, Diagnostics& diag )
+{
+    TableReader r( table, path, diag );
+    r.checkKeys( { "static_speed_m_per_s", "slide_displacement_m", "window_s",
+                   "speed_percentile" },
+                 "[stages.static_stop]" );
+    StaticStop stop;
+    if ( quasi_static )
+    {
+        diag.keyError( table, path,
+                       "only for type \"dynamic\"; a quasi_static "
+                       "stage stops on ke_ratio_tolerance" );
+        return stop;
+    }
+    stop.static_speed_m_per_s =
+        r.number( "static_speed_m_per_s", Range::above( 0.0 ), "m/s",
+                  Need::Required )
+            .value_or( 0.0 );
+    stop.slide_displacement_m =
+        r.number( "slide_displacement_m", Range::above( 0.0 ), "m",
+                  Need::Optional )
+            .value_or( stop.slide_displacement_m );
+    stop.window_s =
+        r.number( "window_s", Range::above( 0.0 ), "s", Need::Optional )
+            .value_or( stop.window_s );
+    stop.speed_percentile =
+        r.number( "speed_percentile",
+                  Range::interval( 0.0, true, 100.0, false ), "%",
+                  Need::Optional )
+            .value_or( stop.speed_percentile );
+    return stop;
+}
+
 } // namespace Impl
 } // namespace mpm

@@ -50,6 +50,11 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                                       const std::string& prefix,
                                       Diagnostics& diag );
 
+//! [stages.static_stop] at path: end a dynamic stage once static again (an
+//! error for a quasi-static stage).
+StaticStop readStaticStop( const toml::table& table, const std::string& path,
+                           bool quasi_static, Diagnostics& diag );
+
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );
 

@@ -222,15 +222,19 @@ enum class StageType
 /*!
   \brief Ends a dynamic stage once the bodies are static again: after a
   slide (a point has moved farther than slide_displacement_m from its
-  reference position), every point has stayed slower than
-  static_speed_m_per_s for window_s. A stage without a slide runs for its
-  duration.
+  reference position), the speed_percentile-th percentile of the active
+  points' speeds (100: every point) has stayed below static_speed_m_per_s
+  for window_s. A stage without a slide runs for its duration.
 */
 struct StaticStop
 {
     double static_speed_m_per_s = 0.0; //!< 0: no static stop
     double slide_displacement_m = 0.5;
     double window_s = 1.0;
+    //! Percentile p in (0, 100] of the point speeds that must stay below
+    //! the static speed (nearest rank: at most floor(N (100 - p) / 100) of
+    //! the N active points as fast or faster); 100 = the largest speed.
+    double speed_percentile = 100.0;
     bool enabled() const { return static_speed_m_per_s > 0.0; }
 };
 

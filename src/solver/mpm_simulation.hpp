@@ -233,6 +233,12 @@ class Simulation
                    : mpm::maxPointSpeed( ExecSpace(), particles );
     }
 
+    //! Number of active points with a solid speed >= `speed` (m/s).
+    long pointsNotBelowSpeed( const double speed ) const
+    {
+        return countPointsNotBelowSpeed( ExecSpace(), particles, speed );
+    }
+
     //! Largest displacement |x - x0| of the active points, m.
     double maxDisplacement() const
     {
