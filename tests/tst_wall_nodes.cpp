@@ -1,3 +1,4 @@
+#include <io/mpm_case_reader.hpp>
 #include <mpm_device_type.hpp>
 #include <setup/mpm_conditions.hpp>
 #include <setup/mpm_geometry.hpp>
@@ -8,8 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <set>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -275,6 +278,55 @@ TEST( WallNodes, segment_meets_open_square )
     EXPECT_FALSE( segmentMeetsOpenSquare( { 2, 0.01 }, { 0.01, 2 }, c, 1.0 ) );
     // Ending before the square.
     EXPECT_FALSE( segmentMeetsOpenSquare( { -3, 0 }, { -1.5, 0 }, c, 1.0 ) );
+}
+
+//---------------------------------------------------------------------------//
+// Reader: interior walls in a two-phase case (impermeable by default,
+// vertical segments and any direction allowed) and the static stop's
+// speed_percentile (default 100), through overrides.
+TEST( WallNodes, reader_takes_walls_and_the_speed_percentile )
+{
+    std::ifstream in( RAINSLIDE_TEST_DATA_DIR "/good_two_phase_case.toml" );
+    std::stringstream text;
+    text << in.rdbuf();
+    text << "\n[[boundaries]]\nwhere = \"polyline\"\n"
+            "polyline_m = [[0.1, 0.0], [0.1, 0.5], [0.15, 0.45]]\n"
+            "condition = \"fix_x\"\n"
+            "\n[[boundaries]]\nwhere = \"polyline\"\n"
+            "polyline_m = [[0.2, 0.8], [0.0, 0.8]]\n"
+            "condition = \"none\"\nhydraulic = \"drained\"\n";
+    const auto c =
+        mpm::parseCase( text.str(), "walls.toml",
+                        { "stages[1].static_stop.static_speed_m_per_s=0.01" } );
+    ASSERT_EQ( c.boundaries.size(), 6u );
+    const auto& wall = c.boundaries[4];
+    EXPECT_EQ( wall.where, mpm::BoundarySelector::Polyline );
+    EXPECT_EQ( wall.condition, mpm::BoundaryCondition::FixX );
+    EXPECT_EQ( wall.hydraulic, mpm::HydraulicCondition::Impermeable );
+    ASSERT_EQ( wall.polyline_m.size(), 3u );
+    EXPECT_EQ( wall.polyline_m[2][0], 0.15 );
+    const auto& screen = c.boundaries[5];
+    EXPECT_FALSE( screen.constrains_solid );
+    EXPECT_EQ( screen.hydraulic, mpm::HydraulicCondition::Drained );
+    // The first stage inherits the case list; the second has its own.
+    EXPECT_EQ( c.stages[0].boundaries.size(), 6u );
+    EXPECT_EQ( c.stages[1].boundaries.size(), 1u );
+    EXPECT_EQ( c.stages[1].static_stop.speed_percentile, 100.0 );
+
+    const auto p95 =
+        mpm::parseCase( text.str(), "walls.toml",
+                        { "stages[1].static_stop.static_speed_m_per_s=0.01",
+                          "stages[1].static_stop.speed_percentile=95" } );
+    EXPECT_EQ( p95.stages[1].static_stop.speed_percentile, 95.0 );
+    for ( const char* bad : { "0", "100.5", "-3" } )
+        EXPECT_THROW(
+            mpm::parseCase( text.str(), "walls.toml",
+                            { "stages[1].static_stop.static_speed_m_per_s=0.01",
+                              std::string( "stages[1].static_stop."
+                                           "speed_percentile=" ) +
+                                  bad } ),
+            mpm::CaseError )
+            << bad;
 }
 
 } // namespace
