@@ -23,11 +23,14 @@ namespace Impl
 /*!
   \brief Read an array of boundary tables at prefix ("boundaries" or
   "stages[k].boundaries"), including the hydraulic condition of two-phase
-  analyses and purely hydraulic boundaries (condition = "none").
+  analyses and purely hydraulic boundaries (condition = "none"). The
+  vertices of an interior wall (where = "polyline") are checked against
+  `grid` unless it is null (an invalid [grid]).
 */
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
                                             const Analysis& analysis,
+                                            const GridConfig* grid,
                                             Diagnostics& diag );
 
 //---------------------------------------------------------------------------//
@@ -46,6 +49,11 @@ std::vector<PointLoad> readLoads( const toml::array& array,
 std::vector<WaterInflow> readInflows( const toml::array& array,
                                       const std::string& prefix,
                                       Diagnostics& diag );
+
+//! [stages.static_stop] at path: end a dynamic stage once static again (an
+//! error for a quasi-static stage).
+StaticStop readStaticStop( const toml::table& table, const std::string& path,
+                           bool quasi_static, Diagnostics& diag );
 
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );

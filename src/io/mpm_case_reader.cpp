@@ -63,8 +63,9 @@ class CaseParser
         parseBodies( root );
         if ( const auto* arr = root.tableArray( "boundaries", Need::Optional,
                                                 "[[boundaries]]" ) )
-            _config.boundaries =
-                Impl::readBoundaries( *arr, "boundaries", _analysis, _diag );
+            _config.boundaries = Impl::readBoundaries(
+                *arr, "boundaries", _analysis,
+                _grid_ok ? &_config.grid : nullptr, _diag );
         parseSolver( root );
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )
@@ -411,8 +412,8 @@ class CaseParser
                               Need::Optional )
                         .value_or( stage.ke_ratio_tolerance );
             if ( const auto* t = r.subTable( "static_stop", Need::Optional ) )
-                stage.static_stop = readStaticStop( *t, path + ".static_stop",
-                                                    type && quasi_static );
+                stage.static_stop = Impl::readStaticStop(
+                    *t, path + ".static_stop", type && quasi_static, _diag );
             stage.snapshot_interval_s =
                 r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
                           "s (0 = at the stage end only)", Need::Optional )
@@ -428,7 +429,8 @@ class CaseParser
             if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
                                                "[[stages.boundaries]]" ) )
                 stage.boundaries = Impl::readBoundaries(
-                    *b, path + ".boundaries", _analysis, _diag );
+                    *b, path + ".boundaries", _analysis,
+                    _grid_ok ? &_config.grid : nullptr, _diag );
             if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
                 if ( const auto* f = r.tableArray( "inflows", Need::Optional,
                                                    "[[stages.inflows]]" ) )
@@ -445,37 +447,6 @@ class CaseParser
                 stage.loads = Impl::readLoads( *l, path + ".loads", _diag );
             _config.stages.push_back( stage );
         }
-    }
-
-    //! [stages.static_stop]: end a dynamic stage once static again.
-    StaticStop readStaticStop( const toml::table& table,
-                               const std::string& path,
-                               const bool quasi_static )
-    {
-        TableReader r( table, path, _diag );
-        r.checkKeys(
-            { "static_speed_m_per_s", "slide_displacement_m", "window_s" },
-            "[stages.static_stop]" );
-        StaticStop stop;
-        if ( quasi_static )
-        {
-            _diag.keyError( table, path,
-                            "only for type \"dynamic\"; a quasi_static "
-                            "stage stops on ke_ratio_tolerance" );
-            return stop;
-        }
-        stop.static_speed_m_per_s =
-            r.number( "static_speed_m_per_s", Range::above( 0.0 ), "m/s",
-                      Need::Required )
-                .value_or( 0.0 );
-        stop.slide_displacement_m =
-            r.number( "slide_displacement_m", Range::above( 0.0 ), "m",
-                      Need::Optional )
-                .value_or( stop.slide_displacement_m );
-        stop.window_s =
-            r.number( "window_s", Range::above( 0.0 ), "s", Need::Optional )
-                .value_or( stop.window_s );
-        return stop;
     }
 
     //! Apply [stages.materials.<name>] tables to the stage's materials.

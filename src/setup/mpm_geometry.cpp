@@ -173,5 +173,29 @@ double polylineY( const std::vector<Point2>& polyline, const double x )
     return a[1] + t * ( b[1] - a[1] );
 }
 
+//---------------------------------------------------------------------------//
+bool segmentMeetsOpenSquare( const Point2& a, const Point2& b, const Point2& c,
+                             const double r )
+{
+    // The parameters t of a + t (b - a) inside the square form the open
+    // interval (t_lo, t_hi) (Liang–Barsky); it must meet [0, 1].
+    double t_lo = -1.0e300, t_hi = 1.0e300;
+    for ( int d = 0; d < 2; ++d )
+    {
+        const double step = b[d] - a[d];
+        const double lo = c[d] - r - a[d], hi = c[d] + r - a[d];
+        if ( step == 0.0 )
+        {
+            if ( !( lo < 0.0 && 0.0 < hi ) )
+                return false;
+            continue;
+        }
+        const double t0 = lo / step, t1 = hi / step;
+        t_lo = std::max( t_lo, std::min( t0, t1 ) );
+        t_hi = std::min( t_hi, std::max( t0, t1 ) );
+    }
+    return t_lo < t_hi && t_lo < 1.0 && t_hi > 0.0;
+}
+
 } // namespace geometry
 } // namespace mpm

@@ -58,6 +58,17 @@ bool findSelfIntersection( const std::vector<Point2>& polygon, int& edge_a,
 */
 double polylineY( const std::vector<Point2>& polyline, double x );
 
+//---------------------------------------------------------------------------//
+/*!
+  \brief Whether the closed segment ab meets the open axis-aligned square
+  of half-width r centred on c: whether some point of the segment lies
+  less than r from c in both x and y (its max-norm distance to c is < r).
+
+  Exact for vertical, horizontal and degenerate (a == b) segments.
+*/
+bool segmentMeetsOpenSquare( const Point2& a, const Point2& b, const Point2& c,
+                             double r );
+
 } // namespace geometry
 } // namespace mpm
 

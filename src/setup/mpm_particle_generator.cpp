@@ -1,5 +1,6 @@
 #include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
+#include <setup/mpm_wall_nodes.hpp>
 
 #include <mpm_device_type.hpp>
 
@@ -96,6 +97,9 @@ std::vector<int> nodeFlags( const GridConfig& grid,
         if ( !bc.constrains_solid )
             continue;
         const int flag = flagOf( bc.condition );
+        const std::vector<int> wall = bc.where == BoundarySelector::Polyline
+                                          ? wallNodes( grid, bc.polyline_m )
+                                          : std::vector<int>();
         for ( int i = 0; i < nx1; ++i )
             for ( int j = 0; j < ny1; ++j )
             {
@@ -122,12 +126,26 @@ std::vector<int> nodeFlags( const GridConfig& grid,
                                         tolerance;
                     break;
                 }
+                case BoundarySelector::Polyline:
+                    selected = wall[i * ny1 + j] != 0;
+                    break;
                 }
                 if ( selected )
                     flags[i * ny1 + j] |= flag;
             }
     }
     return flags;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<BoundaryConfig>
+interiorWalls( const std::vector<BoundaryConfig>& boundaries, const bool walls )
+{
+    std::vector<BoundaryConfig> result;
+    for ( const BoundaryConfig& bc : boundaries )
+        if ( ( bc.where == BoundarySelector::Polyline ) == walls )
+            result.push_back( bc );
+    return result;
 }
 
 } // namespace mpm

@@ -72,6 +72,15 @@ nlohmann::json stageMetrics( const StageSummary& stage, const bool two_phase )
     }
     if ( two_phase )
         j["water_balance"] = waterBalanceMetrics( stage.water );
+    if ( stage.speed_percentile > 0.0 )
+        j["static_stop"] = {
+            { "speed_percentile", stage.speed_percentile },
+            { "static_speed_m_per_s", stage.static_speed_m_per_s },
+            { "speed_at_percentile_m_per_s",
+              stage.speed_at_percentile_m_per_s },
+            { "points_not_below_static_speed",
+              stage.points_not_below_static_speed },
+            { "allowed_points_not_below", stage.allowed_points_not_below } };
     return j;
 }
 

@@ -6,6 +6,7 @@
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
 #include <solver/mpm_stage_state.hpp>
+#include <solver/mpm_static_stop.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -79,31 +80,6 @@ inline double chooseTimeStep( const SolverConfig& solver,
         throw SimulationError( msg.str() );
     }
     return solver.dt_s;
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Static stop of a dynamic stage: updates the state with this step's
-  largest point speed and returns true once the stage should end (a slide,
-  then every point slower than the static speed for the window).
-  maxDisplacement() gives the largest point displacement; it is called only
-  until a slide has been seen.
-*/
-template <class MaxDisplacement>
-bool staticAgain( const StaticStop& stop, const double max_speed,
-                  const double stage_time_s, MaxDisplacement&& maxDisplacement,
-                  StageLoopState& state )
-{
-    if ( !state.has_moved && maxDisplacement() > stop.slide_displacement_m )
-        state.has_moved = true;
-    if ( !state.has_moved || !( max_speed < stop.static_speed_m_per_s ) )
-    {
-        state.static_since = -1.0;
-        return false;
-    }
-    if ( state.static_since < 0.0 )
-        state.static_since = stage_time_s;
-    return stage_time_s - state.static_since >= stop.window_s;
 }
 
 //---------------------------------------------------------------------------//
@@ -317,8 +293,15 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 }
             }
             else if ( stage.static_stop.enabled() &&
-                      staticAgain(
-                          stage.static_stop, max_speed, progress.stage_time_s,
+                      staticAgainIf(
+                          stage.static_stop,
+                          [&]()
+                          {
+                              return speedStatisticBelow(
+                                  sim, stage.static_stop, max_speed,
+                                  progress.active_points );
+                          },
+                          progress.stage_time_s,
                           [&sim]() { return sim.maxDisplacement(); }, state ) )
             {
                 stage_summary.stop_reason = "static_again";
@@ -330,7 +313,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         stage_summary.duration_s = progress.stage_time_s;
         const WaterContent water = sim.waterContent();
         stage_summary.water.end( water.active, water.removed );
-        observer.onSnapshot( progress, hostSnapshot( sim ) );
+        const HostSnapshot stage_end = hostSnapshot( sim );
+        observer.onSnapshot( progress, stage_end );
+        if ( !quasi_static && stage.static_stop.enabled() )
+            recordSpeedStatistic( stage.static_stop, stage_end, stage_summary );
         if ( stage.reset_displacement && !summary.interrupted )
             sim.resetDisplacement();
         observer.onStageEnd( progress, stage_summary );

@@ -124,7 +124,10 @@ class Simulation
         materials = makeMaterialTable( stage.materials );
         if ( analysis == AnalysisType::Unsaturated && solver.retention_table )
             _retention_tables.attach( materials );
-        std::vector<int> flags = nodeFlags( grid_config, stage.boundaries );
+        // Interior walls are added after fixBaseSlivers: the empty cells
+        // beside a wall are no soil sliver (they would all be fixed).
+        std::vector<int> flags =
+            nodeFlags( grid_config, interiorWalls( stage.boundaries, false ) );
         std::vector<int> water_flags;
         if ( twoPhase() )
             water_flags = waterNodeFlags( grid_config, stage.boundaries );
@@ -135,6 +138,10 @@ class Simulation
         if ( complete )
             fixBaseSlivers( grid.geometry, activePositions(), flags,
                             &water_flags );
+        const std::vector<int> walls =
+            nodeFlags( grid_config, interiorWalls( stage.boundaries, true ) );
+        for ( std::size_t n = 0; n < flags.size(); ++n )
+            flags[n] |= walls[n];
         copyNodeFlags( flags, grid.flags_i );
         _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
                               : std::vector<int>();
@@ -236,6 +243,12 @@ class Simulation
     {
         return mpm::waterContent( ExecSpace(), particles, water_particles,
                                   water );
+    }
+
+    //! Number of active points with a solid speed >= `speed` (m/s).
+    long pointsNotBelowSpeed( const double speed ) const
+    {
+        return countPointsNotBelowSpeed( ExecSpace(), particles, speed );
     }
 
     //! Largest displacement |x - x0| of the active points, m.

@@ -56,8 +56,8 @@ struct StageLoopState
     double below_since = -1.0;
     //! Static stop: a point has moved farther than the slide displacement.
     bool has_moved = false;
-    //! Static stop: stage time since which all points are slower than the
-    //! static speed (after moving), or -1.
+    //! Static stop: stage time since which the speed statistic is below
+    //! the static speed (after moving), or -1.
     double static_since = -1.0;
     double next_snapshot_s = 0.0;   //!< stage time of the next snapshot
     double next_checkpoint_s = 0.0; //!< run time of the next checkpoint
@@ -119,6 +119,11 @@ void visitStageSummary( Summary& s, F&& f )
     f( "max_speed_m_per_s", s.max_speed_m_per_s );
     visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
                        { f( "water." + name, value ); } );
+    f( "speed_percentile", s.speed_percentile );
+    f( "static_speed_m_per_s", s.static_speed_m_per_s );
+    f( "speed_at_percentile_m_per_s", s.speed_at_percentile_m_per_s );
+    f( "points_not_below_static_speed", s.points_not_below_static_speed );
+    f( "allowed_points_not_below", s.allowed_points_not_below );
 }
 
 //! Calls f(name, field) for every field of a RunProgress.
