@@ -1,7 +1,7 @@
 #include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
 
-#include <mpm_device_type.hpp>
+#include <mpm_status_flags.hpp>
 
 #include <cmath>
 
