@@ -1,7 +1,10 @@
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_toml_prescan.hpp>
 
+#include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -56,17 +59,23 @@ class Scanner
             {
                 ++_line;
                 _column = 1;
+                _line_blank = true;
             }
             else
+            {
                 ++_column;
+                if ( _text[_pos] != ' ' && _text[_pos] != '\t' )
+                    _line_blank = false;
+            }
         }
     }
 
-    bool fail( const std::string& text )
+    bool fail( const std::string& text, const int column_offset = 0 )
     {
         toml::source_region where;
-        where.begin = { static_cast<toml::source_index>( _line ),
-                        static_cast<toml::source_index>( _column ) };
+        where.begin = {
+            static_cast<toml::source_index>( _line ),
+            static_cast<toml::source_index>( _column + column_offset ) };
         where.end = where.begin;
         where.path = _path;
         _diag.error( where, text );
@@ -148,14 +157,36 @@ class Scanner
             _lex = Lex::Literal;
             break;
         case '[':
-        case '{':
-            ++_depth;
+            if ( _open.empty() && _line_blank )
+            {
+                if ( !tableHeaderStart() )
+                    return false;
+                _in_header = true;
+            }
             _dots = 0;
+            _open.push_back( { _in_header ? 'h' : c, _line, _column } );
             break;
-        case ']':
-        case '}':
-            _depth = _depth > 0 ? _depth - 1 : 0;
+        case '{':
             _dots = 0;
+            _open.push_back( { c, _line, _column } );
+            break;
+        case '}':
+            // toml++ 3.3 parses a '}' where an array expects a value as
+            // the start of a value, breaking the precondition of its value
+            // parser (an assertion in debug builds, undefined behaviour in
+            // release ones): "e = [}". Never valid TOML.
+            if ( !_open.empty() && _open.back().bracket == '[' )
+                return fail( "invalid TOML: expected a value or ']' in the "
+                             "array opened at line " +
+                             std::to_string( _open.back().line ) + ", column " +
+                             std::to_string( _open.back().column ) +
+                             ", found '}'" );
+            [[fallthrough]];
+        case ']':
+            _dots = 0;
+            if ( !_open.empty() )
+                _open.pop_back();
+            _in_header = _in_header && !_open.empty();
             break;
         case '.':
             ++_dots;
@@ -168,13 +199,63 @@ class Scanner
         default:
             break;
         }
-        if ( _depth + _dots > max_nesting_depth )
+        if ( static_cast<int>( _open.size() ) + _dots > max_nesting_depth )
             return fail( "invalid case file: keys, arrays and inline tables "
                          "nested deeper than " +
                          std::to_string( max_nesting_depth ) +
                          " levels (dotted key parts, '[' and '{' counted)" );
         advance();
         return true;
+    }
+
+    /*!
+      At the '[' of a table header ('[' or '[[' first on a line, outside
+      any value): the name must start with a bare key character or a quote
+      (or be ']' or the end: toml++ reports those). toml++ 3.3 calls its
+      key parser on any other character, whose precondition it breaks:
+      an assertion in debug builds, undefined behaviour in release ones
+      ("[\n", "[[[a]]]", "[=").
+    */
+    bool tableHeaderStart()
+    {
+        std::size_t at = _pos + 1;
+        auto blanks = [&]()
+        {
+            const std::size_t from = at;
+            while ( at < _text.size() &&
+                    ( _text[at] == ' ' || _text[at] == '\t' ) )
+                ++at;
+            return at > from;
+        };
+        if ( !blanks() && at < _text.size() && _text[at] == '[' )
+        {
+            ++at;
+            blanks();
+        }
+        if ( at == _text.size() )
+            return true;
+        const char c = _text[at];
+        if ( isBareKeyCharacter( c ) || c == '"' || c == '\'' || c == ']' )
+            return true;
+        return fail( "invalid TOML: expected a table name (a bare or quoted "
+                     "key) after '[', found " +
+                         describe( c ),
+                     static_cast<int>( at - _pos ) );
+    }
+
+    //! A character for messages: 'c', or its name or code.
+    static std::string describe( const char c )
+    {
+        if ( c == '\n' || c == '\r' )
+            return "the end of the line";
+        const auto u = static_cast<unsigned char>( c );
+        if ( u < 0x20 || u >= 0x7f )
+        {
+            char code[8];
+            std::snprintf( code, sizeof code, "0x%02X", u );
+            return std::string( "the byte " ) + code;
+        }
+        return "'" + std::string( 1, c ) + "'";
     }
 
     std::string_view _text;
@@ -184,8 +265,18 @@ class Scanner
     int _line = 1;
     int _column = 1;
     Lex _lex = Lex::Plain;
-    int _depth = 0;
     int _dots = 0;
+    //! The open '[' and '{', innermost last (the nesting depth; at most
+    //! max_nesting_depth + 1: deeper fails).
+    struct Open
+    {
+        char bracket; //!< '[', '{' or 'h' (of a table header)
+        int line;
+        int column;
+    };
+    std::vector<Open> _open;
+    bool _in_header = false; //!< in the brackets of a table header
+    bool _line_blank = true; //!< only blanks so far on the current line
 };
 
 } // namespace

@@ -14,9 +14,13 @@ namespace Impl
 /*!
   \brief Check TOML text, before toml++ parses it, for what the parser
   does not survive: keys, arrays and inline tables nested deeper than
-  max_nesting_depth (toml++ recurses and overflows the stack) and a byte
+  max_nesting_depth (toml++ recurses and overflows the stack), a byte
   outside ASCII outside strings and comments (never valid TOML; toml++
-  3.3 reaches __builtin_unreachable on it in debug builds).
+  3.3 reaches __builtin_unreachable on it in debug builds), and invalid
+  TOML on which toml++ 3.3 breaks the preconditions of its own parsing
+  functions (assertions in debug builds, undefined behaviour in release
+  ones; found by tests/fuzz/): a table header whose name does not start
+  with a key ("[\n", "[[[a]]]") and a '}' in an array ("e = [}").
 
   Strings and comments are skipped; the nesting depth at a character is
   the number of open '[' and '{' plus the dots of the dotted key it is
