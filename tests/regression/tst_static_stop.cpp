@@ -1,6 +1,7 @@
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
 
+#include <solver/mpm_metrics.hpp>
 #include <solver/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
@@ -245,6 +246,17 @@ TYPED_TEST( StaticStop, percentile_ignores_a_few_moving_points )
     EXPECT_EQ( full.points_not_below_static_speed, 4 );
     EXPECT_NEAR( full.speed_at_percentile_m_per_s, sim_max.maxPointSpeed(),
                  1.0e-12 );
+
+    // metrics.json: the statistic of a stage with a static stop only.
+    const auto json = mpm::stageMetrics( stage );
+    ASSERT_TRUE( json.contains( "static_stop" ) );
+    EXPECT_EQ( json["static_stop"]["speed_percentile"], 99.0 );
+    EXPECT_EQ( json["static_stop"]["points_not_below_static_speed"], 4 );
+    EXPECT_EQ( json["static_stop"]["allowed_points_not_below"], 8 );
+    EXPECT_EQ( json["static_stop"]["speed_at_percentile_m_per_s"],
+               stage.speed_at_percentile_m_per_s );
+    EXPECT_FALSE(
+        mpm::stageMetrics( mpm::StageSummary() ).contains( "static_stop" ) );
 }
 
 } // namespace
