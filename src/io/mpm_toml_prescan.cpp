@@ -117,7 +117,11 @@ class Scanner
             break;
         case Lex::MultiBasic:
             if ( c == '\\' )
+            {
+                if ( !multiLineEscape() )
+                    return false;
                 advance();
+            }
             else if ( startsWith( "\"\"\"" ) )
             {
                 advance( 3 );
@@ -275,6 +279,54 @@ class Scanner
                          " levels (dotted key parts, '[' and '{' counted)" );
         advance();
         return true;
+    }
+
+    /*!
+      At a '\\' in a multi-line basic string: toml++ 3.3 asks whether the
+      character after it, or after a line-ending backslash the first one
+      that is not a blank or a line break, is whitespace, and reaches
+      __builtin_unreachable (undefined behaviour in release builds) for
+      most characters outside ASCII (U+00A0 to U+0499 among them: Latin-1,
+      Greek, Cyrillic). Valid TOML, refused here.
+    */
+    bool multiLineEscape()
+    {
+        auto blank = []( const char b )
+        { return b == ' ' || b == '\t' || b == '\r' || b == '\n'; };
+        std::size_t at = _pos + 1;
+        auto outside = [&]()
+        {
+            return at < _text.size() &&
+                   static_cast<unsigned char>( _text[at] ) >= 0x80;
+        };
+        if ( !outside() )
+        {
+            if ( at == _text.size() || !blank( _text[at] ) )
+                return true;
+            while ( at < _text.size() && blank( _text[at] ) )
+                ++at;
+            if ( !outside() )
+                return true;
+        }
+        // Report at `at`: its line and column.
+        const int line = _line, column = _column;
+        for ( std::size_t k = _pos; k < at; ++k )
+        {
+            if ( _text[k] == '\n' )
+            {
+                ++_line;
+                _column = 1;
+            }
+            else
+                ++_column;
+        }
+        fail( "invalid case file: a character outside ASCII right after a "
+              "backslash or a line-ending backslash in a multi-line string, "
+              "which the TOML parser (toml++ 3.3) cannot read; start with an "
+              "ASCII character there or use a literal string '''...'''" );
+        _line = line;
+        _column = column;
+        return false;
     }
 
     /*!

@@ -21,7 +21,11 @@ namespace Impl
   functions (assertions in debug builds, undefined behaviour in release
   ones; found by tests/fuzz/): a table header whose name does not start
   with a key ("[\n", "[[[a]]]"), a '}' in an array ("e = [}") and a date
-  and 'T' without a time ("d = 1978-05-27T:").
+  and 'T' without a time ("d = 1978-05-27T:"). Also refused, though valid
+  TOML: a character outside ASCII right after a backslash, or after a
+  line-ending backslash and the blanks and line breaks it skips, in a
+  multi-line basic string (toml++ 3.3 asks whether it is whitespace and
+  reaches __builtin_unreachable for most of them).
 
   Like toml++, the scan opens a string only at a quote that starts a
   value or a key part (after '=', '[', '{', ',', a '.' between key parts
