@@ -25,7 +25,12 @@ CaseCheck checkCase( const std::string& case_file,
     double vertices = 0.0;
     for ( const BodyConfig& body : config.bodies )
         vertices += static_cast<double>( body.polygon_m.size() );
-    if ( check.estimate.points * vertices <= max_point_tests )
+    // generatePoints tests the rows of points against every edge, then
+    // each point against the bodies.
+    const double rows = static_cast<double>( config.grid.cells[1] ) *
+                        config.points_per_cell_per_direction;
+    if ( check.estimate.points * vertices <= max_point_tests &&
+         rows * vertices <= max_point_tests )
     {
         check.points_checked = true;
         check.errors = pointRefusals( config );

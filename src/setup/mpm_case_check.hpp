@@ -32,16 +32,17 @@ struct CaseCheck
     bool ok() const { return errors.empty(); }
 };
 
-//! Cases whose points x polygon vertices exceed this skip the point checks
-//! (seconds of work; a run still does them).
+//! Cases whose points x polygon vertices, or rows of points (cells[1] x
+//! points per cell and direction) x polygon vertices, exceed this skip the
+//! point checks (seconds of work; a run still does them).
 constexpr double max_point_tests = 5.0e8;
 
 //---------------------------------------------------------------------------//
 /*!
   \brief What `rainslide check` and `run` do before any work: read the case
   (readCaseFile with the overrides), estimate the run (estimateRun), refuse
-  what cannot finish or exceeds the budget (runRefusals) and, if points x
-  polygon vertices <= max_point_tests, the errors that show only once the
+  what cannot finish or exceeds the budget (runRefusals) and, unless that
+  is more work than max_point_tests, the errors that show only once the
   points exist (pointRefusals). Needs no Kokkos; prints nothing.
 
   \throw CaseError if the file cannot be read or is not a valid case.

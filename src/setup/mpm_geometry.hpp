@@ -27,6 +27,18 @@ bool pointInPolygon( const std::vector<Point2>& polygon, const Point2& p );
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Where the polygon's edges cross the line at height y, in
+  increasing x: pointInPolygon( polygon, {x, y} ) is true exactly if an
+  odd number of them are > x (the same test, edge by edge, with the same
+  numbers). Empty for a polygon that pointInPolygon finds empty.
+
+  \param crossings Filled (its storage is reused).
+*/
+void rowCrossings( const std::vector<Point2>& polygon, double y,
+                   std::vector<double>& crossings );
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Absolute area of a simple polygon (shoelace formula), m^2 for
   vertices in m.
 */
