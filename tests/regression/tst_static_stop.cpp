@@ -248,15 +248,15 @@ TYPED_TEST( StaticStop, percentile_ignores_a_few_moving_points )
                  1.0e-12 );
 
     // metrics.json: the statistic of a stage with a static stop only.
-    const auto json = mpm::stageMetrics( stage );
+    const auto json = mpm::stageMetrics( stage, false );
     ASSERT_TRUE( json.contains( "static_stop" ) );
     EXPECT_EQ( json["static_stop"]["speed_percentile"], 99.0 );
     EXPECT_EQ( json["static_stop"]["points_not_below_static_speed"], 4 );
     EXPECT_EQ( json["static_stop"]["allowed_points_not_below"], 8 );
     EXPECT_EQ( json["static_stop"]["speed_at_percentile_m_per_s"],
                stage.speed_at_percentile_m_per_s );
-    EXPECT_FALSE(
-        mpm::stageMetrics( mpm::StageSummary() ).contains( "static_stop" ) );
+    EXPECT_FALSE( mpm::stageMetrics( mpm::StageSummary(), false )
+                      .contains( "static_stop" ) );
 }
 
 } // namespace
