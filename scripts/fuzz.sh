@@ -122,7 +122,7 @@ for f in "${findings[@]}"; do
     summary=$(grep -E 'Assertion|runtime error|ERROR: |escaped|ALARM|out-of-memory|[Tt]imeout' <<<"$report" |
         grep -v -E 'ERROR: libFuzzer: deadly signal' | head -n 3 || true)
     frames=$(grep -E '^ +#[0-9]+ ' <<<"$report" |
-        grep -v -E '__sanitizer|fuzzer::|libc\.so|/nptl/|/stdlib/|/assert/|/signal/|__libc_|_start|__asan|__ubsan|in main ' |
+        grep -v -E '__sanitizer|fuzzer::|libc\.so|nptl/|stdlib/|assert/|signal/|__libc_|_start|__asan|__ubsan|in main ' |
         head -n 6 | sed -E 's/^ +#[0-9]+ 0x[0-9a-f]+ in /    /' | cut -c1-200 || true)
     if [ -z "$summary$frames" ]; then
         echo "    (no report on replay)"
