@@ -89,6 +89,7 @@ struct PorePressurePointUpdate
         RetentionAt retention[lanes];
         physics::PorePressureNewton newton[lanes];
         physics::SaturationState stored[lanes];
+        double source[lanes]; // the inflow's Eq. 8 source, 1/s
         for ( int l = 0; l < lanes; ++l )
         {
             newton[l].done = true;
@@ -98,10 +99,9 @@ struct PorePressurePointUpdate
             const double n = n_p( q );
             const double S = S_p( q );
             // Water volume change per unit volume over the step (Eq. 8).
-            const int inflow = inflow_p( q );
-            const double source = inflowSource( q, inflow );
+            source[l] = inflowSource( q, inflow_p( q ) );
             const double volume_change =
-                kinematics.dt * ( source - water_rate[l] );
+                kinematics.dt * ( source[l] - water_rate[l] );
             retention[l] = RetentionAt{ params[l]->retention };
             newton[l] = physics::PorePressureNewton(
                 p_w_p( q ), S, n, water.bulk_modulus, volume_change );
@@ -141,10 +141,9 @@ struct PorePressurePointUpdate
                 dS_dp_p( q ) = state.dS_dp;
                 k_rel_p( q ) = state.k_rel;
             }
-            const double source = inflowSource( q, inflow );
             const double div_v_s = L[l][0][0] + L[l][1][1];
             physics::addPointStepWater(
-                volumes, vol_p( q ), kinematics.dt, source,
+                volumes, vol_p( q ), kinematics.dt, source[l],
                 water_rate[l] - point.S * div_v_s, point.volume_change,
                 point.storage, capped, p_w_free, condition >= 0, point.n,
                 point.S, S_p( q ), point.p_w, p_w );

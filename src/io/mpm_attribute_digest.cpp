@@ -1,8 +1,9 @@
 #include <io/mpm_attribute_digest.hpp>
 #include <io/mpm_case_fingerprint.hpp>
 
-#include <cstdio>
+#include <cstdint>
 #include <cstring>
+#include <string>
 
 namespace mpm
 {
@@ -27,6 +28,33 @@ void AttributeDigest::add( const std::string& path,
         text = "s" + std::to_string( s.size() ) + ":" + s;
     }
     _entries[path] = text;
+}
+
+//---------------------------------------------------------------------------//
+namespace
+{
+// The path of attribute `name` of the object at path `object`.
+std::string attributePath( const std::string& object, const std::string& name )
+{
+    return object == "/" ? "/" + name : object + "/" + name;
+}
+} // namespace
+
+void AttributeDigest::write( const Hdf5Ops& h5, const hid_t loc,
+                             const std::string& object, const std::string& name,
+                             const AttributeValue& value )
+{
+    h5.writeAttribute( loc, object, name.c_str(), value );
+    add( attributePath( object, name ), value );
+}
+
+AttributeValue AttributeDigest::read( const Hdf5Ops& h5, const hid_t loc,
+                                      const std::string& object,
+                                      const std::string& name )
+{
+    AttributeValue value = h5.readAttribute( loc, object, name.c_str() );
+    add( attributePath( object, name ), value );
+    return value;
 }
 
 //---------------------------------------------------------------------------//

@@ -215,10 +215,7 @@ void writeFile( const std::string& path, const Checkpoint& c )
         { "last_snapshot_time_s", c.snapshots.last_time_s } };
     AttributeDigest digest;
     for ( const auto& [name, value] : attributes )
-    {
-        h5.writeAttribute( file, "/", name, value );
-        digest.add( std::string( "/" ) + name, value );
-    }
+        digest.write( h5, file, "/", name, value );
     const std::string& text = id.case_fingerprint;
     writeChecked( h5, file, "case_fingerprint", H5T_STD_U8LE, H5T_NATIVE_UCHAR,
                   { text.size() }, text.data() );
@@ -239,9 +236,8 @@ void writeFile( const std::string& path, const Checkpoint& c )
     writeVector( h5, conditions, "load_group_members", members );
     writeVector( h5, conditions, "inflow_volumes", c.inflow_volumes );
     writeVector( h5, conditions, "inflow_lengths_m", c.inflow_lengths_m );
-    h5.writeAttribute( conditions, "/conditions", "next_surface_update_s",
-                       c.next_surface_update_s );
-    digest.add( "/conditions/next_surface_update_s", c.next_surface_update_s );
+    digest.write( h5, conditions, "/conditions", "next_surface_update_s",
+                  c.next_surface_update_s );
 
     writeLoop( path, file, c.loop, digest );
     h5.writeAttribute( file, "/", digest_name, digest.hex() );
@@ -312,11 +308,7 @@ Checkpoint readCheckpoint( const std::string& path )
     AttributeDigest digest;
     // Reads a root attribute and takes it into the digest.
     const auto attribute = [&]( const char* name )
-    {
-        const AttributeValue value = h5.readAttribute( file, "/", name );
-        digest.add( std::string( "/" ) + name, value );
-        return value;
-    };
+    { return digest.read( h5, file, "/", name ); };
     const auto text = [&]( const char* name )
     { return std::get<std::string>( attribute( name ) ); };
     const auto integer = [&]( const char* name )
@@ -367,10 +359,8 @@ Checkpoint readCheckpoint( const std::string& path )
     c.inflow_volumes = readVector<double>( h5, conditions, "inflow_volumes" );
     c.inflow_lengths_m =
         readVector<double>( h5, conditions, "inflow_lengths_m" );
-    const AttributeValue next_surface_update =
-        h5.readAttribute( conditions, "/conditions", "next_surface_update_s" );
-    digest.add( "/conditions/next_surface_update_s", next_surface_update );
-    c.next_surface_update_s = std::get<double>( next_surface_update );
+    c.next_surface_update_s = std::get<double>(
+        digest.read( h5, conditions, "/conditions", "next_surface_update_s" ) );
 
     readLoop( path, file, c.loop, digest );
     const bool has_digest = h5.hasAttribute( file, "/", digest_name );

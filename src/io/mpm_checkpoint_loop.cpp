@@ -93,19 +93,15 @@ void writeLoop( const std::string& file, const hid_t root,
                         "H5Gcreate2", H5Gclose, sub );
                     visitStageSummary(
                         value[k],
-                        [&]( const std::string& field, const auto& v )
-                        {
-                            h5.writeAttribute( stage, sub, field.c_str(),
-                                               toAttribute( v ) );
-                            digest.add( sub + "/" + field, toAttribute( v ) );
+                        [&]( const std::string& field, const auto& v ) {
+                            digest.write( h5, stage, sub, field,
+                                          toAttribute( v ) );
                         } );
                 }
             }
             else
             {
-                h5.writeAttribute( group, "/loop", name.c_str(),
-                                   toAttribute( value ) );
-                digest.add( "/loop/" + name, toAttribute( value ) );
+                digest.write( h5, group, "/loop", name, toAttribute( value ) );
             }
         } );
     h5.closeAll();
@@ -126,10 +122,8 @@ void readLoop( const std::string& file, const hid_t root, StageLoopState& loop,
                 "checkpoint '" + file + "': missing loop field '" + name +
                 "' in " + object +
                 " (written by another version of rainslide?)" );
-        const AttributeValue attribute =
-            h5.readAttribute( loc, object, name.c_str() );
-        digest.add( object + "/" + name, attribute );
-        fromAttribute( attribute, value, file, name );
+        fromAttribute( digest.read( h5, loc, object, name ), value, file,
+                       name );
     };
     visitStageLoopState(
         loop,
