@@ -4,6 +4,7 @@
 #include <mpm_device_type.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_pore_pressure.hpp>
+#include <mpm_timestep.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_cell_pressure_slope.hpp>
 #include <physics/mpm_grid_geometry.hpp>
@@ -234,6 +235,15 @@ void cellPressureSlopes( const ExecSpace& exec_space,
 }
 
 //---------------------------------------------------------------------------//
+//! What cellWaterEquilibrium returns: the CFL limit of the points it
+//! listed, after its update, and how many it listed.
+struct CellEquilibriumLimit
+{
+    WaveSpeedLimit limit;
+    int listed;
+};
+
+//---------------------------------------------------------------------------//
 /*!
   \brief physics::CellWaterEquilibrium on every cell (points at their new
   positions, after the step's point update): lists the points of each cell,
@@ -242,17 +252,17 @@ void cellPressureSlopes( const ExecSpace& exec_space,
   pressure, with the retention state, on the cell's points whose p_w is not
   prescribed (a cell whose points already lie on it is left as it is); the
   water that moves between them carries its seepage velocity (the takers'
-  v_w - v_s becomes the mass-weighted mean).
+  v_w - v_s becomes the mass-weighted mean). Returns the CFL limit of the
+  listed points' new state (as criticalTimeStepTwoPhase) and how many were
+  listed: the step's cached limit, taken before, would be stale.
 */
 template <class ExecSpace>
-void cellWaterEquilibrium( const ExecSpace& exec_space,
-                           const ParticleViews<ExecSpace>& pv,
-                           const WaterParticleViews<ExecSpace>& wv,
-                           const physics::GridGeometry& grid,
-                           const physics::MaterialTable& materials,
-                           const physics::WaterParams& water,
-                           const bool saturated, const bool linear_profile,
-                           const CellPointLists<ExecSpace>& lists )
+CellEquilibriumLimit cellWaterEquilibrium(
+    const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
+    const WaterParticleViews<ExecSpace>& wv, const physics::GridGeometry& grid,
+    const physics::MaterialTable& materials, const physics::WaterParams& water,
+    const bool saturated, const bool linear_profile,
+    const CellPointLists<ExecSpace>& lists )
 {
     listCellPoints( exec_space, pv, wv, grid, lists );
     if ( linear_profile )
@@ -278,110 +288,139 @@ void cellWaterEquilibrium( const ExecSpace& exec_space,
     const auto slope_c = unmanaged( lists.slope_c );
     const auto bound_c = unmanaged( lists.bound_c );
     const auto change_p = unmanaged( lists.change_p );
+    const auto m_p = unmanaged( pv.m_p );
+    const double cell_size = grid.h;
     const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
 
-    Kokkos::parallel_for(
+    CellEquilibriumLimit result{ { 0.0, 0.0 }, 0 };
+    Kokkos::parallel_reduce(
         "mpm::cell_equilibrium_solve",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c ) {
-            const int begin = offset_c( c );
-            int end = begin; // the free points come first
-            while ( end < offset_c( c + 1 ) &&
-                    condition_p( points_c( end ) ) < 0 )
-                ++end;
-            if ( end - begin < 2 )
-                return;
-            // The slope's share: halved until the profile stays within the
-            // cell's range (the retention law is not linear: where a front
-            // crosses the cell, the level that holds the water can sink
-            // the dry side's points below every suction around them).
-            double share = linear_profile ? 1.0 : 0.0;
-            const auto profile = [&]( const int p )
+        KOKKOS_LAMBDA( const int c, double& dt_min, double& c_max,
+                       int& listed ) {
+            const auto solve_cell = [&]()
             {
-                return share *
-                       ( slope_c( c, 0 ) * ( x_p( p, 0 ) - centre_c( c, 0 ) ) +
-                         slope_c( c, 1 ) * ( x_p( p, 1 ) - centre_c( c, 1 ) ) );
-            };
-            const auto point = [&]( const int a )
-            {
-                const int p = points_c( begin + a );
-                return physics::CellWaterEquilibrium::Point{
-                    vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ), profile( p ),
-                    &materials[material_p( p )].retention };
-            };
-            bool changed = false;
-            double level = equilibrium.solve( end - begin, point, changed );
-            for ( int attempt = 0; attempt < 4 && share > 0.0; ++attempt )
-            {
-                bool inside = true;
-                const double margin =
-                    1.0e-9 * ( bound_c( c, 1 ) - bound_c( c, 0 ) ) + 1.0e-6;
-                for ( int a = begin; a < end; ++a )
+                const int begin = offset_c( c );
+                int end = begin; // the free points come first
+                while ( end < offset_c( c + 1 ) &&
+                        condition_p( points_c( end ) ) < 0 )
+                    ++end;
+                if ( end - begin < 2 )
+                    return;
+                // The slope's share: halved until the profile stays within the
+                // cell's range (the retention law is not linear: where a front
+                // crosses the cell, the level that holds the water can sink
+                // the dry side's points below every suction around them).
+                double share = linear_profile ? 1.0 : 0.0;
+                const auto profile = [&]( const int p )
                 {
-                    const double p_w = level + profile( points_c( a ) );
-                    inside = inside && p_w >= bound_c( c, 0 ) - margin &&
-                             p_w <= bound_c( c, 1 ) + margin;
+                    return share * ( slope_c( c, 0 ) *
+                                         ( x_p( p, 0 ) - centre_c( c, 0 ) ) +
+                                     slope_c( c, 1 ) *
+                                         ( x_p( p, 1 ) - centre_c( c, 1 ) ) );
+                };
+                const auto point = [&]( const int a )
+                {
+                    const int p = points_c( begin + a );
+                    return physics::CellWaterEquilibrium::Point{
+                        vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ),
+                        profile( p ), &materials[material_p( p )].retention };
+                };
+                bool changed = false;
+                double level = equilibrium.solve( end - begin, point, changed );
+                for ( int attempt = 0; attempt < 4 && share > 0.0; ++attempt )
+                {
+                    bool inside = true;
+                    const double margin =
+                        1.0e-9 * ( bound_c( c, 1 ) - bound_c( c, 0 ) ) + 1.0e-6;
+                    for ( int a = begin; a < end; ++a )
+                    {
+                        const double p_w = level + profile( points_c( a ) );
+                        inside = inside && p_w >= bound_c( c, 0 ) - margin &&
+                                 p_w <= bound_c( c, 1 ) + margin;
+                    }
+                    if ( inside )
+                        break;
+                    share = attempt < 2 ? 0.5 * share : 0.0;
+                    level = equilibrium.solve( end - begin, point, changed );
                 }
-                if ( inside )
-                    break;
-                share = attempt < 2 ? 0.5 * share : 0.0;
-                level = equilibrium.solve( end - begin, point, changed );
-            }
-            if ( !changed )
-                return;
-            if ( saturated )
-            {
+                if ( !changed )
+                    return;
+                if ( saturated )
+                {
+                    for ( int a = begin; a < end; ++a )
+                    {
+                        const int p = points_c( a );
+                        p_w_p( p ) = level + profile( p );
+                    }
+                    return;
+                }
+                // The new state of each point and the water it gives or takes.
+                double given = 0.0, given_v[2] = { 0.0, 0.0 };
                 for ( int a = begin; a < end; ++a )
                 {
                     const int p = points_c( a );
-                    p_w_p( p ) = level + profile( p );
+                    const double p_w = level + profile( p );
+                    const physics::RetentionState state =
+                        RetentionAt{ materials[material_p( p )].retention }
+                            .state( p_w );
+                    const double change =
+                        vol_p( p ) * n_p( p ) * ( state.S - S_p( p ) );
+                    change_p( p ) = change;
+                    if ( change < 0.0 )
+                    {
+                        given -= change;
+                        given_v[0] -=
+                            change * ( v_w_p( p, 0 ) - v_s_p( p, 0 ) );
+                        given_v[1] -=
+                            change * ( v_w_p( p, 1 ) - v_s_p( p, 1 ) );
+                    }
+                    p_w_p( p ) = p_w;
+                    S_p( p ) = state.S;
+                    dS_dp_p( p ) = state.dS_dp;
+                    k_rel_p( p ) = state.k_rel;
                 }
-                return;
-            }
-            // The new state of each point and the water it gives or takes.
-            double given = 0.0, given_v[2] = { 0.0, 0.0 };
-            for ( int a = begin; a < end; ++a )
-            {
-                const int p = points_c( a );
-                const double p_w = level + profile( p );
-                const physics::RetentionState state =
-                    RetentionAt{ materials[material_p( p )].retention }.state(
-                        p_w );
-                const double change =
-                    vol_p( p ) * n_p( p ) * ( state.S - S_p( p ) );
-                change_p( p ) = change;
-                if ( change < 0.0 )
+                // The water that moves between the points carries its seepage
+                // velocity w = v_w - v_s: the points that give water keep
+                // theirs, those that take it get the mass-weighted mean with
+                // the given water's (water locked to the solid stays locked).
+                if ( !( given > 0.0 ) )
+                    return;
+                for ( int a = begin; a < end; ++a )
                 {
-                    given -= change;
-                    given_v[0] -= change * ( v_w_p( p, 0 ) - v_s_p( p, 0 ) );
-                    given_v[1] -= change * ( v_w_p( p, 1 ) - v_s_p( p, 1 ) );
+                    const int p = points_c( a );
+                    const double change = change_p( p );
+                    if ( !( change > 0.0 ) )
+                        continue;
+                    const double after = vol_p( p ) * n_p( p ) * S_p( p );
+                    for ( int d = 0; d < 2; ++d )
+                        v_w_p( p, d ) =
+                            v_s_p( p, d ) +
+                            ( ( after - change ) *
+                                  ( v_w_p( p, d ) - v_s_p( p, d ) ) +
+                              change * given_v[d] / given ) /
+                                after;
                 }
-                p_w_p( p ) = p_w;
-                S_p( p ) = state.S;
-                dS_dp_p( p ) = state.dS_dp;
-                k_rel_p( p ) = state.k_rel;
-            }
-            // The water that moves between the points carries its seepage
-            // velocity w = v_w - v_s: the points that give water keep
-            // theirs, those that take it get the mass-weighted mean with
-            // the given water's (water locked to the solid stays locked).
-            if ( !( given > 0.0 ) )
-                return;
-            for ( int a = begin; a < end; ++a )
+            };
+            solve_cell();
+            // The CFL limit of the cell's points in their new state.
+            for ( int a = offset_c( c ); a < offset_c( c + 1 ); ++a )
             {
                 const int p = points_c( a );
-                const double change = change_p( p );
-                if ( !( change > 0.0 ) )
-                    continue;
-                const double after = vol_p( p ) * n_p( p ) * S_p( p );
-                for ( int d = 0; d < 2; ++d )
-                    v_w_p( p, d ) = v_s_p( p, d ) +
-                                    ( ( after - change ) *
-                                          ( v_w_p( p, d ) - v_s_p( p, d ) ) +
-                                      change * given_v[d] / given ) /
-                                        after;
+                const double wave = waveSpeedTwoPhase(
+                    materials[material_p( p )], water, m_p( p ), vol_p( p ),
+                    n_p( p ), S_p( p ) );
+                const double dt = pointTimeStep( cell_size, wave, v_s_p( p, 0 ),
+                                                 v_s_p( p, 1 ) );
+                dt_min = dt < dt_min ? dt : dt_min;
+                c_max = wave > c_max ? wave : c_max;
+                ++listed;
             }
-        } );
+        },
+        Kokkos::Min<double>( result.limit.dt_limit ),
+        Kokkos::Max<double>( result.limit.max_wave_speed ),
+        Kokkos::Sum<int>( result.listed ) );
+    return result;
 }
 
 } // namespace mpm

@@ -130,6 +130,33 @@ double maxPointSpeed( const ExecSpace& exec_space,
         } );
 }
 
+/*!
+  \brief Number of active points whose solid speed |v_p| is not below
+  `speed` (|v_p| >= speed, or not a number): the count that decides
+  whether a percentile of the speeds is below `speed`, without a sort.
+*/
+template <class ExecSpace>
+long countPointsNotBelowSpeed( const ExecSpace& exec_space,
+                               const ParticleViews<ExecSpace>& pv,
+                               const double speed )
+{
+    const auto v_p = unmanaged( pv.v_p );
+    const auto status_p = unmanaged( pv.status_p );
+    const double speed2 = speed * speed;
+    long count = 0;
+    Kokkos::parallel_reduce(
+        "mpm::count_points_not_below_speed",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, long& n ) {
+            const double v2 =
+                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
+            if ( status_p( p ) == point_active && !( v2 < speed2 ) )
+                ++n;
+        },
+        count );
+    return count;
+}
+
 //! Largest displacement |x_p - x0_p| over the active points, m.
 template <class ExecSpace>
 double maxDisplacement( const ExecSpace& exec_space,

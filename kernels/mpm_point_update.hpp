@@ -13,6 +13,7 @@
 #include <mpm_water_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_point_water.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -25,6 +26,8 @@ struct PointUpdateReport
                        //!< and was kept, -1 if none
     int num_removed;   //!< points removed because they left the grid
     StepDiagnostics diagnostics; //!< of the new state
+    //! Two-phase: the water the step's Eq. 8 moved (zero when dry).
+    physics::WaterStepVolumes water;
 };
 
 //---------------------------------------------------------------------------//
@@ -32,7 +35,8 @@ struct PointUpdateReport
   \brief The last point loop of a step, one pass over the points in groups
   of GroupSize: `update_states(count, p, params)` updates the state of the
   group's `count` active points p[0..count) of materials params[l]
-  (velocity gradient, pore pressure, stress), then, point after point, the
+  (velocity gradient, pore pressure, stress) and adds the water it moved to
+  `volumes` (physics::WaterStepVolumes), then, point after point, the
   position, x_p += du_p (a point that left the grid is removed with
   `remove_outside`, else reported), and the diagnostics of the new state
   (StepDiagnostics; `wave_speed(p, params)` is the point's fastest wave
@@ -59,6 +63,7 @@ updatePoints( const char* label, const ExecSpace& exec_space,
     StepDiagnostics d{ 0.0, 0.0, 0.0, 0.0, none };
     int first_outside = none;
     int num_removed = 0;
+    physics::WaterStepVolumes water;
 
     Kokkos::parallel_reduce(
         label,
@@ -66,7 +71,8 @@ updatePoints( const char* label, const ExecSpace& exec_space,
                                         ( none + GroupSize - 1 ) / GroupSize ),
         KOKKOS_LAMBDA( const int group, double& dt_min, double& c_max,
                        double& energy, double& speed2_max, int& first_unsound,
-                       int& first_out, int& removed ) {
+                       int& first_out, int& removed, double& point_inflow,
+                       double& runoff, double& prescribed, double& flow_in ) {
             // The group's active points.
             int p[GroupSize];
             const physics::MaterialParams* params[GroupSize];
@@ -83,7 +89,12 @@ updatePoints( const char* label, const ExecSpace& exec_space,
                 }
             if ( count == 0 )
                 return;
-            update_states( count, p, params );
+            physics::WaterStepVolumes volumes;
+            update_states( count, p, params, volumes );
+            point_inflow += volumes.point_inflow;
+            runoff += volumes.runoff;
+            prescribed += volumes.prescribed;
+            flow_in += volumes.flow_in;
             for ( int l = 0; l < count; ++l )
             {
                 const int q = p[l];
@@ -120,9 +131,13 @@ updatePoints( const char* label, const ExecSpace& exec_space,
         Kokkos::Sum<double>( d.kinetic_energy ),
         Kokkos::Max<double>( d.max_speed2 ),
         Kokkos::Min<int>( d.first_unsound ), Kokkos::Min<int>( first_outside ),
-        Kokkos::Sum<int>( num_removed ) );
+        Kokkos::Sum<int>( num_removed ),
+        Kokkos::Sum<double>( water.point_inflow ),
+        Kokkos::Sum<double>( water.runoff ),
+        Kokkos::Sum<double>( water.prescribed ),
+        Kokkos::Sum<double>( water.flow_in ) );
     return PointUpdateReport{ first_outside >= none ? -1 : first_outside,
-                              num_removed, d };
+                              num_removed, d, water };
 }
 
 //---------------------------------------------------------------------------//
@@ -245,7 +260,8 @@ struct DryStateUpdate
 
     KOKKOS_FORCEINLINE_FUNCTION void
     operator()( const int count, const int p[],
-                const physics::MaterialParams* const params[] ) const
+                const physics::MaterialParams* const params[],
+                physics::WaterStepVolumes& ) const
     {
         for ( int l = 0; l < count; ++l )
         {
@@ -304,12 +320,13 @@ struct TwoPhaseStateUpdate
 
     KOKKOS_FORCEINLINE_FUNCTION void
     operator()( const int count, const int p[],
-                const physics::MaterialParams* const params[] ) const
+                const physics::MaterialParams* const params[],
+                physics::WaterStepVolumes& volumes ) const
     {
         double L[lanes][2][2], water_rate[lanes];
         for ( int l = 0; l < count; ++l )
             gradient( p[l], L[l], water_rate[l] );
-        pore_pressure( count, p, L, water_rate, params );
+        pore_pressure( count, p, L, water_rate, params, volumes );
         for ( int l = 0; l < count; ++l )
             stress( p[l], L[l], *params[l] );
     }

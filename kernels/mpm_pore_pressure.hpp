@@ -5,6 +5,7 @@
 #include <mpm_water_views.hpp>
 #include <physics/mpm_kinematics.hpp>
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_point_water.hpp>
 #include <physics/mpm_retention.hpp>
 #include <physics/mpm_two_phase.hpp>
 
@@ -42,13 +43,17 @@ struct RetentionAt
   dS/dp_w, k_rel. `prescribed_p_w(c)` is the current pressure of condition c,
   Pa, unless `prescribed_hold(c)`: then its points keep p_w_held_p (their p_w
   at the stage start); `inflow_rate(f)` the water volume inflow f adds per
-  unit point volume and time (1/s), times the point's inflow_weight_p, a
-  source in Eq. 8; `inflow_ponding(f)` caps p_w at 0 on its points (the
-  excess runs off). With `retention_current`, the stored S_p, dS_dp_p and
-  k_rel_p are the retention law's values at p_w_p (true after an unsaturated
-  update with the same materials), which saves one retention evaluation per
-  point, and all of them where p_w is held. Updates up to `lanes` points at
-  once, their Newton iterations in lock step (physics::porePressureIncrements).
+  unit initial point volume (vol0_p) and time (1/s), times the point's
+  inflow_weight_p, a source in Eq. 8 (so V source is exactly the point's share
+  of the prescribed rain however its volume changed); `inflow_ponding(f)` caps
+  p_w at 0 on its points (the excess runs off). With `retention_current`, the
+  stored S_p, dS_dp_p and k_rel_p are the retention law's values at p_w_p
+  (true after an unsaturated update with the same materials), which saves one
+  retention evaluation per point, and all of them where p_w is held. Updates
+  up to `lanes` points at once, their Newton iterations in lock step
+  (physics::porePressureIncrements), and adds the water they took in, ran off
+  or were given to `volumes` (physics::addPointStepWater; the point volumes
+  are those at the step's start).
 */
 template <class ExecSpace, class PressureView, class RateView, class FlagView>
 struct PorePressurePointUpdate
@@ -61,23 +66,35 @@ struct PorePressurePointUpdate
     physics::WaterParams water;
     bool saturated;
     bool retention_current;
-    scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p, p_w_held_p, inflow_weight_p;
+    scalar_view p_w_p, S_p, dS_dp_p, k_rel_p, n_p, p_w_held_p, inflow_weight_p,
+        vol_p, vol0_p;
     int_view condition_p, inflow_p;
     UnmanagedView<PressureView> prescribed_p_w;
     UnmanagedView<FlagView> prescribed_hold;
     UnmanagedView<RateView> inflow_rate;
     UnmanagedView<FlagView> inflow_ponding;
 
+    //! Water volume inflow `inflow` adds to point q per unit volume, 1/s.
+    KOKKOS_INLINE_FUNCTION double inflowSource( const int q,
+                                                const int inflow ) const
+    {
+        return inflow >= 0 ? inflow_rate( inflow ) * inflow_weight_p( q ) *
+                                 vol0_p( q ) / vol_p( q )
+                           : 0.0;
+    }
+
     //! Updates the `count` (<= lanes) points p[l], with velocity gradient
     //! L[l], water volume rate water_rate[l] and material params[l].
     KOKKOS_INLINE_FUNCTION void
     operator()( const int count, const int p[], const double L[][2][2],
                 const double water_rate[],
-                const physics::MaterialParams* const params[] ) const
+                const physics::MaterialParams* const params[],
+                physics::WaterStepVolumes& volumes ) const
     {
         RetentionAt retention[lanes];
         physics::PorePressureNewton newton[lanes];
         physics::SaturationState stored[lanes];
+        double source[lanes]; // the inflow's Eq. 8 source, 1/s
         for ( int l = 0; l < lanes; ++l )
         {
             newton[l].done = true;
@@ -87,12 +104,9 @@ struct PorePressurePointUpdate
             const double n = n_p( q );
             const double S = S_p( q );
             // Water volume change per unit volume over the step (Eq. 8).
-            const int inflow = inflow_p( q );
-            const double source =
-                inflow >= 0 ? inflow_rate( inflow ) * inflow_weight_p( q )
-                            : 0.0;
+            source[l] = inflowSource( q, inflow_p( q ) );
             const double volume_change =
-                kinematics.dt * ( source - water_rate[l] );
+                kinematics.dt * ( source[l] - water_rate[l] );
             retention[l] = RetentionAt{ params[l]->retention };
             newton[l] = physics::PorePressureNewton(
                 p_w_p( q ), S, n, water.bulk_modulus, volume_change );
@@ -114,7 +128,10 @@ struct PorePressurePointUpdate
                 p_w += point.volume_change * water.bulk_modulus / point.n;
             else if ( condition < 0 )
                 p_w += point.dp;
-            if ( inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0 )
+            const double p_w_free = p_w;
+            const bool capped =
+                inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0;
+            if ( capped )
                 p_w = 0.0;
             if ( condition >= 0 )
                 p_w = prescribed_hold( condition )
@@ -131,6 +148,12 @@ struct PorePressurePointUpdate
                 dS_dp_p( q ) = state.dS_dp;
                 k_rel_p( q ) = state.k_rel;
             }
+            const double div_v_s = L[l][0][0] + L[l][1][1];
+            physics::addPointStepWater(
+                volumes, vol_p( q ), kinematics.dt, source[l],
+                water_rate[l] - point.S * div_v_s, point.volume_change,
+                point.storage, capped, p_w_free, condition >= 0, point.n,
+                point.S, S_p( q ), point.p_w, p_w );
         }
     }
 };
@@ -138,7 +161,8 @@ struct PorePressurePointUpdate
 //! PorePressurePointUpdate of the points of `wv` (conditions as there).
 template <class ExecSpace, class PressureView, class RateView, class FlagView>
 PorePressurePointUpdate<ExecSpace, PressureView, RateView, FlagView>
-porePressurePointUpdate( const WaterParticleViews<ExecSpace>& wv,
+porePressurePointUpdate( const ParticleViews<ExecSpace>& pv,
+                         const WaterParticleViews<ExecSpace>& wv,
                          const physics::WaterParams& water, const double dt,
                          const bool saturated, const bool retention_current,
                          const PressureView& prescribed_p_w,
@@ -157,6 +181,8 @@ porePressurePointUpdate( const WaterParticleViews<ExecSpace>& wv,
              wv.n_p,
              wv.p_w_held_p,
              wv.inflow_weight_p,
+             pv.vol_p,
+             pv.vol0_p,
              wv.p_w_condition_p,
              wv.inflow_p,
              prescribed_p_w,

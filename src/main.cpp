@@ -9,7 +9,7 @@
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_output_folder.hpp>
 #include <mpm_config.hpp>
-#include <setup/mpm_point_check.hpp>
+#include <setup/mpm_case_check.hpp>
 #include <setup/mpm_run_estimate.hpp>
 #include <solver/mpm_run_case.hpp>
 
@@ -31,9 +31,6 @@ namespace
 constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_interrupted = 130;
-//! Cases whose points x polygon vertices exceed this skip the point checks
-//! of `check` (seconds of work; the run still does them).
-constexpr double max_point_tests = 5.0e8;
 
 int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
 {
@@ -164,47 +161,31 @@ int main( int argc, char* argv[] )
 
     CLI11_PARSE( app, argc, argv );
 
-    mpm::CaseConfig config;
+    mpm::CaseCheck case_check;
     try
     {
-        config = mpm::readCaseFile( case_file, overrides );
+        case_check = mpm::checkCase( case_file, overrides, budget );
     }
     catch ( const mpm::CaseError& error )
     {
         std::cerr << error.what() << "\n";
         return exit_bad_input;
     }
-    // Refuse what cannot finish or exceeds the budget, before any work.
-    const mpm::RunEstimate estimate = mpm::estimateRun( config );
-    bool cannot_finish = false;
-    const auto refusals =
-        mpm::runRefusals( config, estimate, budget, cannot_finish );
-    if ( !refusals.empty() )
+    // Refused: cannot finish, over the budget, or errors of the points.
+    if ( !case_check.ok() )
     {
-        for ( const std::string& refusal : refusals )
-            std::cerr << config.file << ": error: " << refusal << "\n";
-        std::cerr << "  " << mpm::estimateSummary( estimate ) << "\n";
+        std::cerr << mpm::checkErrorReport( case_check );
         return exit_bad_input;
     }
-    // Warnings of the reader (a valid case, probably not as meant).
+    const mpm::CaseConfig& config = case_check.config;
+    const mpm::RunEstimate& estimate = case_check.estimate;
+    // Warnings of the reader (a valid case, probably not as meant); those
+    // of the points only for `check`: a run warns at each stage start.
     for ( const std::string& warning : config.warnings )
         std::cerr << warning << "\n";
-    // Errors that show only once the points exist (as a run makes them);
-    // their warnings only for `check`: a run warns at each stage start.
-    double vertices = 0.0;
-    for ( const mpm::BodyConfig& body : config.bodies )
-        vertices += static_cast<double>( body.polygon_m.size() );
-    if ( estimate.points * vertices <= max_point_tests )
-    {
-        const mpm::PointFindings findings = mpm::checkPoints( config );
-        for ( const std::string& error : findings.refusals )
-            std::cerr << config.file << ": error: " << error << "\n";
-        if ( !findings.refusals.empty() )
-            return exit_bad_input;
-        if ( check->parsed() )
-            for ( const std::string& warning : findings.warnings )
-                std::cerr << config.file << ": warning: " << warning << "\n";
-    }
+    if ( check->parsed() )
+        for ( const std::string& warning : case_check.point_warnings )
+            std::cerr << config.file << ": warning: " << warning << "\n";
     if ( check->parsed() )
     {
         printCheckSummary( config, estimate );

@@ -40,6 +40,36 @@ residual_saturation = 0.23
 )";
 }
 
+/*!
+  \brief The slope soil's porosity and permeability with Gardner's law
+  (alpha 4 /m of head, residual saturation 0), stiff (E = 100 MPa: the
+  exact infiltration solutions' soil is rigid), as [[materials]] "soil",
+  followed by rollers on the grid's left and right edges.
+*/
+inline std::string gardnerSoilOnRollersToml()
+{
+    return R"(
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 2700.0
+porosity = 0.3
+permeability_m2 = 4.5e-9
+youngs_modulus_pa = 1.0e8
+poisson_ratio = 0.0
+[materials.retention]
+model = "gardner"
+alpha_per_m = 4.0
+residual_saturation = 0.0
+[[boundaries]]
+where = "left"
+condition = "fix_x"
+[[boundaries]]
+where = "right"
+condition = "fix_x"
+)";
+}
+
 } // namespace mpm_test
 
 #endif // MPM_TEST_WATER_HPP

@@ -1,6 +1,8 @@
 #ifndef MPM_DEVICE_TYPE_HPP
 #define MPM_DEVICE_TYPE_HPP
 
+#include <mpm_status_flags.hpp>
+
 #include <Kokkos_Core.hpp>
 
 namespace mpm
@@ -29,22 +31,6 @@ UnmanagedView<ViewType> unmanaged( const ViewType& view )
 {
     return view;
 }
-
-//! Status of a material point.
-enum PointStatus : int
-{
-    point_removed = 0, //!< left the grid and was removed (not simulated)
-    point_active = 1
-};
-
-//! Boundary flags of a grid node (bit mask).
-enum NodeFlag : int
-{
-    node_free = 0,
-    node_fix_x = 1,
-    node_fix_y = 2,
-    node_fixed = 3
-};
 
 //! True if a node's flags fix both directions of its solid.
 KOKKOS_INLINE_FUNCTION bool fullyFixed( const int flags )

@@ -200,7 +200,8 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             : "[[stages.boundaries]]" );
         BoundaryConfig bc;
         const auto where = r.choice(
-            "where", { "left", "right", "bottom", "top", "below_polyline" },
+            "where",
+            { "left", "right", "bottom", "top", "below_polyline", "polyline" },
             Need::Required );
         const auto condition =
             r.choice( "condition", { "fixed", "fix_x", "fix_y", "none" },
@@ -240,10 +241,19 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                 bc.polyline_m = *line;
             }
         }
+        else if ( where && bc.where == BoundarySelector::Polyline )
+        {
+            if ( auto line = r.points( "polyline_m", 2, "m", Need::Required ) )
+            {
+                checkWallPolyline( *line, *r.find( "polyline_m" ),
+                                   path + ".polyline_m", grid, diag );
+                bc.polyline_m = *line;
+            }
+        }
         else if ( where && r.find( "polyline_m" ) )
             diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
-                           "only for where = \"below_polyline\"; remove "
-                           "it or change 'where'" );
+                           "only for where = \"below_polyline\" or "
+                           "\"polyline\"; remove it or change 'where'" );
         result.push_back( bc );
     }
     return result;
@@ -313,6 +323,41 @@ std::vector<PointLoad> readLoads( const toml::array& array,
         result.push_back( load );
     }
     return result;
+}
+
+//---------------------------------------------------------------------------//
+StaticStop readStaticStop( const toml::table& table, const std::string& path,
+                           const bool quasi_static, Diagnostics& diag )
+{
+    TableReader r( table, path, diag );
+    r.checkKeys( { "static_speed_m_per_s", "slide_displacement_m", "window_s",
+                   "speed_percentile" },
+                 "[stages.static_stop]" );
+    StaticStop stop;
+    if ( quasi_static )
+    {
+        diag.keyError( table, path,
+                       "only for type \"dynamic\"; a quasi_static "
+                       "stage stops on ke_ratio_tolerance" );
+        return stop;
+    }
+    stop.static_speed_m_per_s =
+        r.number( "static_speed_m_per_s", Range::above( 0.0 ), "m/s",
+                  Need::Required )
+            .value_or( 0.0 );
+    stop.slide_displacement_m =
+        r.number( "slide_displacement_m", Range::above( 0.0 ), "m",
+                  Need::Optional )
+            .value_or( stop.slide_displacement_m );
+    stop.window_s =
+        r.number( "window_s", Range::above( 0.0 ), "s", Need::Optional )
+            .value_or( stop.window_s );
+    stop.speed_percentile =
+        r.number( "speed_percentile",
+                  Range::interval( 0.0, true, 100.0, false ), "%",
+                  Need::Optional )
+            .value_or( stop.speed_percentile );
+    return stop;
 }
 
 } // namespace Impl

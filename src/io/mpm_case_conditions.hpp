@@ -24,7 +24,9 @@ namespace Impl
   \brief Read an array of boundary tables at prefix ("boundaries" or
   "stages[k].boundaries"), including the hydraulic condition of two-phase
   analyses and purely hydraulic boundaries (condition = "none"). With a
-  grid, polyline points outside it are warned about.
+  grid (null if [grid] is invalid), the vertices of an interior wall (where =
+  "polyline") are checked against it and points of a below_polyline line
+  outside it are warned about.
 */
 std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             const std::string& prefix,
@@ -60,6 +62,11 @@ PointSelection readSelection( TableReader& r, bool polyline_allowed );
 
 //! time_function = [[t_s, factor], ...]: optional, empty if not given.
 TimeFunction readTimeFunction( TableReader& r );
+
+//! [stages.static_stop] at path: end a dynamic stage once static again (an
+//! error for a quasi-static stage).
+StaticStop readStaticStop( const toml::table& table, const std::string& path,
+                           bool quasi_static, Diagnostics& diag );
 
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );

@@ -204,11 +204,14 @@ enum class BoundaryCondition
 //! Which grid nodes a boundary condition applies to.
 enum class BoundarySelector
 {
-    Left,         //!< nodes on the grid's left edge
-    Right,        //!< nodes on the grid's right edge
-    Bottom,       //!< nodes on the grid's bottom edge
-    Top,          //!< nodes on the grid's top edge
-    BelowPolyline //!< nodes on or below a polyline y(x) (e.g. a bedrock line)
+    Left,          //!< nodes on the grid's left edge
+    Right,         //!< nodes on the grid's right edge
+    Bottom,        //!< nodes on the grid's bottom edge
+    Top,           //!< nodes on the grid's top edge
+    BelowPolyline, //!< nodes on or below a polyline y(x) (e.g. a bedrock line)
+    //! An interior wall or gate along a polyline in any direction: the
+    //! nodes whose shape function is not zero somewhere on it (wallNodes).
+    Polyline
 };
 
 //! What a boundary prescribes for the pore water (two-phase scenes).
@@ -223,10 +226,14 @@ struct BoundaryConfig
     BoundarySelector where = BoundarySelector::Bottom;
     BoundaryCondition condition = BoundaryCondition::Fixed;
     //! Only for two-phase scenes; grid edges are impermeable by default.
+    //! An impermeable Polyline ties the water to the solid on its nodes;
+    //! a drained one lets the water through (it changes no water tie).
     HydraulicCondition hydraulic = HydraulicCondition::Impermeable;
     //! False for a purely hydraulic boundary (no solid constraint).
     bool constrains_solid = true;
-    //! Only for BelowPolyline: vertices with strictly increasing x, metres.
+    //! BelowPolyline: vertices with strictly increasing x, metres.
+    //! Polyline: the wall's vertices (>= 2, consecutive ones distinct,
+    //! inside the grid), metres. Unused by the other selectors.
     std::vector<Point2> polyline_m;
 };
 
@@ -241,15 +248,19 @@ enum class StageType
 /*!
   \brief Ends a dynamic stage once the bodies are static again: after a
   slide (a point has moved farther than slide_displacement_m from its
-  reference position), every point has stayed slower than
-  static_speed_m_per_s for window_s. A stage without a slide runs for its
-  duration.
+  reference position), the speed_percentile-th percentile of the active
+  points' speeds (100: every point) has stayed below static_speed_m_per_s
+  for window_s. A stage without a slide runs for its duration.
 */
 struct StaticStop
 {
     double static_speed_m_per_s = 0.0; //!< 0: no static stop
     double slide_displacement_m = 0.5;
     double window_s = 1.0;
+    //! Percentile p in (0, 100] of the point speeds that must stay below
+    //! the static speed (nearest rank: at most floor(N (100 - p) / 100) of
+    //! the N active points as fast or faster); 100 = the largest speed.
+    double speed_percentile = 100.0;
     bool enabled() const { return static_speed_m_per_s > 0.0; }
 };
 

@@ -69,8 +69,7 @@ class CaseParser
         parseSolver( root );
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )
-            _config.probes = Impl::readProbes(
-                *t, _grid_ok ? &_config.grid : nullptr, _diag );
+            _config.probes = Impl::readProbes( *t, grid(), _diag );
     }
 
   private:
@@ -285,9 +284,8 @@ class CaseParser
             if ( auto polygon = r.points( "polygon_m", 3, "m", Need::Required,
                                           Impl::max_polygon_vertices ) )
             {
-                Impl::checkBodyPolygon(
-                    *polygon, *r.find( "polygon_m" ), path + ".polygon_m",
-                    _grid_ok ? &_config.grid : nullptr, _diag );
+                Impl::checkBodyPolygon( *polygon, *r.find( "polygon_m" ),
+                                        path + ".polygon_m", grid(), _diag );
                 body.polygon_m = *polygon;
             }
             Impl::readInitialPorePressure( r, _analysis, body );
@@ -408,8 +406,8 @@ class CaseParser
                               Need::Optional )
                         .value_or( stage.ke_ratio_tolerance );
             if ( const auto* t = r.subTable( "static_stop", Need::Optional ) )
-                stage.static_stop = readStaticStop( *t, path + ".static_stop",
-                                                    type && quasi_static );
+                stage.static_stop = Impl::readStaticStop(
+                    *t, path + ".static_stop", type && quasi_static, _diag );
             stage.snapshot_interval_s =
                 r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
                           "s (0 = at the stage end only)", Need::Optional )
@@ -442,37 +440,6 @@ class CaseParser
                 stage.loads = Impl::readLoads( *l, path + ".loads", _diag );
             _config.stages.push_back( stage );
         }
-    }
-
-    //! [stages.static_stop]: end a dynamic stage once static again.
-    StaticStop readStaticStop( const toml::table& table,
-                               const std::string& path,
-                               const bool quasi_static )
-    {
-        TableReader r( table, path, _diag );
-        r.checkKeys(
-            { "static_speed_m_per_s", "slide_displacement_m", "window_s" },
-            "[stages.static_stop]" );
-        StaticStop stop;
-        if ( quasi_static )
-        {
-            _diag.keyError( table, path,
-                            "only for type \"dynamic\"; a quasi_static "
-                            "stage stops on ke_ratio_tolerance" );
-            return stop;
-        }
-        stop.static_speed_m_per_s =
-            r.number( "static_speed_m_per_s", Range::above( 0.0 ), "m/s",
-                      Need::Required )
-                .value_or( 0.0 );
-        stop.slide_displacement_m =
-            r.number( "slide_displacement_m", Range::above( 0.0 ), "m",
-                      Need::Optional )
-                .value_or( stop.slide_displacement_m );
-        stop.window_s =
-            r.number( "window_s", Range::above( 0.0 ), "s", Need::Optional )
-                .value_or( stop.window_s );
-        return stop;
     }
 
     //! Apply [stages.materials.<name>] tables to the stage's materials.

@@ -170,5 +170,33 @@ void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
     }
 }
 
+//---------------------------------------------------------------------------//
+void checkWallPolyline( const std::vector<Point2>& line, const toml::node& node,
+                        const std::string& path, const GridConfig* grid,
+                        Diagnostics& diag )
+{
+    const auto& arr = *node.as_array();
+    for ( std::size_t k = 1; k < line.size(); ++k )
+        if ( line[k] == line[k - 1] )
+        {
+            diag.keyError( *arr.get( k ), indexed( path, k ),
+                           "vertex " + pointText( line[k] ) +
+                               " m is repeated; consecutive wall vertices "
+                               "must differ" );
+            return;
+        }
+    if ( !grid )
+        return;
+    for ( std::size_t k = 0; k < line.size(); ++k )
+    {
+        const std::string outside = outsideGridText( *grid, line[k] );
+        if ( outside.empty() )
+            continue;
+        diag.keyError( *arr.get( k ), indexed( path, k ),
+                       "expected a vertex " + outside );
+        return;
+    }
+}
+
 } // namespace Impl
 } // namespace mpm

@@ -50,6 +50,16 @@ void warnPolylineOutsideGrid( const std::vector<Point2>& line,
 void checkPolyline( const std::vector<Point2>& line, const toml::node& node,
                     const std::string& path, Diagnostics& diag );
 
+//---------------------------------------------------------------------------//
+/*!
+  \brief Check an interior wall's polyline (where = "polyline"): no
+  repeated consecutive vertex and, if grid is given, every vertex inside
+  the grid. Any direction; vertical segments are allowed.
+*/
+void checkWallPolyline( const std::vector<Point2>& line, const toml::node& node,
+                        const std::string& path, const GridConfig* grid,
+                        Diagnostics& diag );
+
 } // namespace Impl
 } // namespace mpm
 

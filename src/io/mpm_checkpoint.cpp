@@ -1,5 +1,7 @@
+#include <io/mpm_attribute_digest.hpp>
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_checkpoint.hpp>
+#include <io/mpm_checkpoint_loop.hpp>
 #include <io/mpm_hdf5.hpp>
 #include <io/mpm_safe_file.hpp>
 #include <mpm_config.hpp>
@@ -21,57 +23,65 @@ namespace mpm
 {
 namespace
 {
+using Impl::AttributeDigest;
 using Impl::AttributeValue;
 using Impl::Hdf5Ops;
+using Impl::linkNames;
+using Impl::readLoop;
+using Impl::writeLoop;
 
 const char* const who = "mpm::Checkpoint";
 const char* const format_name = "rainslide-checkpoint-1";
-
-std::string groupName( const std::size_t index )
-{
-    char buffer[32];
-    std::snprintf( buffer, sizeof( buffer ), "%06zu", index );
-    return buffer;
-}
+//! Root attribute holding the AttributeDigest of the state's attributes.
+const char* const digest_name = "attribute_digest";
 
 //---------------------------------------------------------------------------//
-// Loop-state fields as attributes: double, string, or int64 for the
-// integer and bool fields.
-template <class T>
-AttributeValue toAttribute( const T& value )
+/*!
+  Writes `data` (dims, mem_type) as dataset `path` of `loc`; a non-empty
+  one in one chunk with a Fletcher-32 checksum, so H5Dread refuses it when
+  damaged (a flipped byte was restored silently before).
+*/
+void writeChecked( const Hdf5Ops& h5, const hid_t loc, const std::string& path,
+                   const hid_t file_type, const hid_t mem_type,
+                   const std::vector<hsize_t>& dims, const void* data,
+                   const hid_t lcpl = H5P_DEFAULT )
 {
-    if constexpr ( std::is_same_v<T, double> || std::is_same_v<T, std::string> )
-        return value;
-    else
-        return static_cast<std::int64_t>( value );
+    Hdf5Ops ops( who, h5.file() );
+    hsize_t count = 1;
+    for ( const hsize_t d : dims )
+        count *= d;
+    const hid_t space =
+        ops.open( H5Screate_simple( int( dims.size() ), dims.data(), nullptr ),
+                  "H5Screate_simple", H5Sclose, path );
+    const hid_t dcpl = ops.open( H5Pcreate( H5P_DATASET_CREATE ), "H5Pcreate",
+                                 H5Pclose, path );
+    if ( count > 0 )
+    {
+        ops.check( H5Pset_chunk( dcpl, int( dims.size() ), dims.data() ),
+                   "H5Pset_chunk", path );
+        ops.check( H5Pset_fletcher32( dcpl ), "H5Pset_fletcher32", path );
+    }
+    const hid_t dset = ops.open( H5Dcreate2( loc, path.c_str(), file_type,
+                                             space, lcpl, dcpl, H5P_DEFAULT ),
+                                 "H5Dcreate2", H5Dclose, path );
+    if ( count > 0 )
+        ops.check(
+            H5Dwrite( dset, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data ),
+            "H5Dwrite", path );
+    ops.closeAll();
 }
 
-template <class T>
-void fromAttribute( const AttributeValue& attribute, T& value,
-                    const std::string& file, const std::string& name )
-{
-    using Stored = std::conditional_t<std::is_same_v<T, double> ||
-                                          std::is_same_v<T, std::string>,
-                                      T, std::int64_t>;
-    const auto* stored = std::get_if<Stored>( &attribute );
-    if ( !stored )
-        throw std::runtime_error( "checkpoint '" + file + "': field '" + name +
-                                  "' has the wrong type" );
-    value = static_cast<T>( *stored );
-}
-
-//---------------------------------------------------------------------------//
-// Writes `data` as dataset `path` of `loc` (1D).
+// Writes `data` as the checked dataset `path` of `loc` (1D).
 template <class T>
 void writeVector( const Hdf5Ops& h5, const hid_t loc, const std::string& path,
                   const std::vector<T>& data )
 {
     if constexpr ( std::is_same_v<T, double> )
-        h5.writeDataset( loc, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                         { data.size() }, data.data(), "" );
+        writeChecked( h5, loc, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                      { data.size() }, data.data() );
     else
-        h5.writeDataset( loc, path, H5T_STD_I32LE, H5T_NATIVE_INT,
-                         { data.size() }, data.data(), "" );
+        writeChecked( h5, loc, path, H5T_STD_I32LE, H5T_NATIVE_INT,
+                      { data.size() }, data.data() );
 }
 
 template <class T>
@@ -91,111 +101,6 @@ std::vector<T> readVector( const Hdf5Ops& h5, const hid_t loc,
     return data;
 }
 
-//! Names of the links in group `loc`, in name order.
-std::vector<std::string> linkNames( const Hdf5Ops& h5, const hid_t loc,
-                                    const std::string& object )
-{
-    std::vector<std::string> names;
-    const H5L_iterate_t collect = []( hid_t, const char* name,
-                                      const H5L_info_t*, void* out ) -> herr_t
-    {
-        static_cast<std::vector<std::string>*>( out )->push_back( name );
-        return 0;
-    };
-    h5.check(
-        H5Literate( loc, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names ),
-        "H5Literate", object );
-    return names;
-}
-
-//---------------------------------------------------------------------------//
-void writeLoop( const std::string& file, const hid_t root,
-                const StageLoopState& loop )
-{
-    Hdf5Ops h5( who, file );
-    const hid_t group = h5.open(
-        H5Gcreate2( root, "loop", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT ),
-        "H5Gcreate2", H5Gclose, "/loop" );
-    visitStageLoopState(
-        loop,
-        [&]( const std::string& name, const auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<StageSummary>> )
-            {
-                const std::string path = "/loop/" + name;
-                const hid_t stages =
-                    h5.open( H5Gcreate2( group, name.c_str(), H5P_DEFAULT,
-                                         H5P_DEFAULT, H5P_DEFAULT ),
-                             "H5Gcreate2", H5Gclose, path );
-                for ( std::size_t k = 0; k < value.size(); ++k )
-                {
-                    const std::string sub = path + "/" + groupName( k );
-                    const hid_t stage = h5.open(
-                        H5Gcreate2( stages, groupName( k ).c_str(), H5P_DEFAULT,
-                                    H5P_DEFAULT, H5P_DEFAULT ),
-                        "H5Gcreate2", H5Gclose, sub );
-                    visitStageSummary(
-                        value[k],
-                        [&]( const std::string& field, const auto& v ) {
-                            h5.writeAttribute( stage, sub, field.c_str(),
-                                               toAttribute( v ) );
-                        } );
-                }
-            }
-            else
-                h5.writeAttribute( group, "/loop", name.c_str(),
-                                   toAttribute( value ) );
-        } );
-    h5.closeAll();
-}
-
-void readLoop( const std::string& file, const hid_t root, StageLoopState& loop )
-{
-    Hdf5Ops h5( who, file );
-    const hid_t group = h5.open( H5Gopen2( root, "loop", H5P_DEFAULT ),
-                                 "H5Gopen2", H5Gclose, "/loop" );
-    // Reads attribute `name` of `loc` into `value`.
-    const auto read = [&]( const hid_t loc, const std::string& object,
-                           const std::string& name, auto& value )
-    {
-        if ( !h5.hasAttribute( loc, object, name.c_str() ) )
-            throw std::runtime_error(
-                "checkpoint '" + file + "': missing loop field '" + name +
-                "' in " + object +
-                " (written by another version of rainslide?)" );
-        fromAttribute( h5.readAttribute( loc, object, name.c_str() ), value,
-                       file, name );
-    };
-    visitStageLoopState(
-        loop,
-        [&]( const std::string& name, auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<StageSummary>> )
-            {
-                const std::string path = "/loop/" + name;
-                const hid_t stages =
-                    h5.open( H5Gopen2( group, name.c_str(), H5P_DEFAULT ),
-                             "H5Gopen2", H5Gclose, path );
-                value.resize( linkNames( h5, stages, path ).size() );
-                for ( std::size_t k = 0; k < value.size(); ++k )
-                {
-                    const std::string sub = path + "/" + groupName( k );
-                    const hid_t stage = h5.open(
-                        H5Gopen2( stages, groupName( k ).c_str(), H5P_DEFAULT ),
-                        "H5Gopen2", H5Gclose, sub );
-                    visitStageSummary( value[k],
-                                       [&]( const std::string& field, auto& v )
-                                       { read( stage, sub, field, v ); } );
-                }
-            }
-            else
-                read( group, "/loop", name, value );
-        } );
-    h5.closeAll();
-}
-
 //---------------------------------------------------------------------------//
 void writeArrays( const std::string& file, const hid_t root,
                   const std::vector<CheckpointArray>& arrays )
@@ -209,36 +114,13 @@ void writeArrays( const std::string& file, const hid_t root,
              "H5Gcreate2", H5Gclose, "/state" );
     for ( const CheckpointArray& a : arrays )
     {
-        const std::string path = "/state/" + a.name;
         const std::vector<hsize_t> dims( a.dims.begin(), a.dims.end() );
-        const hid_t space = h5.open(
-            H5Screate_simple( int( dims.size() ), dims.data(), nullptr ),
-            "H5Screate_simple", H5Sclose, path );
-        // Non-empty arrays in one chunk with a Fletcher-32 checksum: H5Dread
-        // refuses a damaged one (a flipped byte restored silently before).
-        const std::size_t count =
-            a.integer ? a.integers.size() : a.reals.size();
-        const hid_t dcpl = h5.open( H5Pcreate( H5P_DATASET_CREATE ),
-                                    "H5Pcreate", H5Pclose, path );
-        if ( count > 0 )
-        {
-            h5.check( H5Pset_chunk( dcpl, int( dims.size() ), dims.data() ),
-                      "H5Pset_chunk", path );
-            h5.check( H5Pset_fletcher32( dcpl ), "H5Pset_fletcher32", path );
-        }
-        const hid_t dset =
-            h5.open( H5Dcreate2( root, path.c_str(),
-                                 a.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE,
-                                 space, lcpl, dcpl, H5P_DEFAULT ),
-                     "H5Dcreate2", H5Dclose, path );
-        if ( count > 0 )
-            h5.check(
-                H5Dwrite( dset, a.integer ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE,
-                          H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                          a.integer
-                              ? static_cast<const void*>( a.integers.data() )
-                              : a.reals.data() ),
-                "H5Dwrite", path );
+        writeChecked( h5, root, "/state/" + a.name,
+                      a.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE,
+                      a.integer ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE, dims,
+                      a.integer ? static_cast<const void*>( a.integers.data() )
+                                : a.reals.data(),
+                      lcpl );
     }
     h5.closeAll();
 }
@@ -303,9 +185,15 @@ void writeFile( const std::string& path, const Checkpoint& c )
     Hdf5Ops h5( who, path );
     // Exclusive: a symlink planted at path is removed, never followed.
     removeStale( path );
-    const hid_t file = h5.open(
-        H5Fcreate( path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT ),
-        "H5Fcreate", H5Fclose, "/" );
+    // The 1.8+ file format: superblock, object headers and B-trees carry
+    // checksums, so a damaged one is refused like a damaged dataset.
+    const hid_t fapl =
+        h5.open( H5Pcreate( H5P_FILE_ACCESS ), "H5Pcreate", H5Pclose, "/" );
+    h5.check( H5Pset_libver_bounds( fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST ),
+              "H5Pset_libver_bounds", "/" );
+    const hid_t file =
+        h5.open( H5Fcreate( path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl ),
+                 "H5Fcreate", H5Fclose, "/" );
     const CheckpointIdentity& id = c.identity;
     const std::vector<std::pair<const char*, AttributeValue>> attributes = {
         { "format", std::string( format_name ) },
@@ -325,11 +213,12 @@ void writeFile( const std::string& path, const Checkpoint& c )
         { "snapshot_count", std::int64_t( c.snapshots.count ) },
         { "last_snapshot_step", std::int64_t( c.snapshots.last_step ) },
         { "last_snapshot_time_s", c.snapshots.last_time_s } };
+    AttributeDigest digest;
     for ( const auto& [name, value] : attributes )
-        h5.writeAttribute( file, "/", name, value );
+        digest.write( h5, file, "/", name, value );
     const std::string& text = id.case_fingerprint;
-    h5.writeDataset( file, "case_fingerprint", H5T_STD_U8LE, H5T_NATIVE_UCHAR,
-                     { text.size() }, text.data(), "" );
+    writeChecked( h5, file, "case_fingerprint", H5T_STD_U8LE, H5T_NATIVE_UCHAR,
+                  { text.size() }, text.data() );
 
     writeArrays( path, file, c.arrays );
 
@@ -347,10 +236,11 @@ void writeFile( const std::string& path, const Checkpoint& c )
     writeVector( h5, conditions, "load_group_members", members );
     writeVector( h5, conditions, "inflow_volumes", c.inflow_volumes );
     writeVector( h5, conditions, "inflow_lengths_m", c.inflow_lengths_m );
-    h5.writeAttribute( conditions, "/conditions", "next_surface_update_s",
-                       c.next_surface_update_s );
+    digest.write( h5, conditions, "/conditions", "next_surface_update_s",
+                  c.next_surface_update_s );
 
-    writeLoop( path, file, c.loop );
+    writeLoop( path, file, c.loop, digest );
+    h5.writeAttribute( file, "/", digest_name, digest.hex() );
     h5.closeAll();
 }
 
@@ -415,12 +305,19 @@ Checkpoint readCheckpoint( const std::string& path )
                                   "' is not a rainslide checkpoint (" +
                                   format_name + ")" );
     Checkpoint c;
+    AttributeDigest digest;
+    // Reads a root attribute and takes it into the digest.
+    const auto attribute = [&]( const char* name )
+    { return digest.read( h5, file, "/", name ); };
     const auto text = [&]( const char* name )
-    { return std::get<std::string>( h5.readAttribute( file, "/", name ) ); };
+    { return std::get<std::string>( attribute( name ) ); };
     const auto integer = [&]( const char* name )
-    { return std::get<std::int64_t>( h5.readAttribute( file, "/", name ) ); };
+    { return std::get<std::int64_t>( attribute( name ) ); };
     const auto real = [&]( const char* name )
-    { return std::get<double>( h5.readAttribute( file, "/", name ) ); };
+    { return std::get<double>( attribute( name ) ); };
+    // The attributes the digest covers but the state does not use.
+    for ( const char* name : { "format", "rainslide_version", "case_hash" } )
+        attribute( name );
     CheckpointIdentity& id = c.identity;
     id.case_name = text( "case_name" );
     id.case_file = text( "case_file" );
@@ -462,10 +359,19 @@ Checkpoint readCheckpoint( const std::string& path )
     c.inflow_volumes = readVector<double>( h5, conditions, "inflow_volumes" );
     c.inflow_lengths_m =
         readVector<double>( h5, conditions, "inflow_lengths_m" );
-    c.next_surface_update_s = std::get<double>( h5.readAttribute(
-        conditions, "/conditions", "next_surface_update_s" ) );
+    c.next_surface_update_s = std::get<double>(
+        digest.read( h5, conditions, "/conditions", "next_surface_update_s" ) );
 
-    readLoop( path, file, c.loop );
+    readLoop( path, file, c.loop, digest );
+    const bool has_digest = h5.hasAttribute( file, "/", digest_name );
+    if ( !has_digest || h5.readAttribute( file, "/", digest_name ) !=
+                            AttributeValue( digest.hex() ) )
+        throw std::runtime_error(
+            "checkpoint '" + path + "': " +
+            ( has_digest ? "its attributes (time, step, stage loop state) do "
+                           "not match their checksum: the file is damaged"
+                         : "it has no attribute checksum (written by "
+                           "another version of rainslide?)" ) );
     h5.closeAll();
     return c;
 }

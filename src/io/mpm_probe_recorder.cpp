@@ -7,9 +7,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace mpm
 {
@@ -77,6 +81,13 @@ ProbeRecorder::ProbeRecorder( const CaseConfig& config,
 }
 
 //---------------------------------------------------------------------------//
+ProbeRecorder::~ProbeRecorder()
+{
+    if ( _fd >= 0 )
+        ::close( _fd );
+}
+
+//---------------------------------------------------------------------------//
 void ProbeRecorder::open( const double resume_time_s )
 {
     if ( _probes.empty() )
@@ -116,17 +127,15 @@ void ProbeRecorder::open( const double resume_time_s )
     std::error_code ec; // a failure shows when the file is opened
     std::filesystem::create_directories(
         std::filesystem::path( _path ).parent_path(), ec );
-    removeStale( partial ); // a planted symlink is not followed
-    _out.open( partial, std::ios::trunc );
-    if ( !_out )
-        throw std::runtime_error( "cannot write " + partial );
-    _out << "time_s,stage,name,point_id,x_m,y_m,u_x_m,u_y_m,v_x_m_per_s,"
-            "v_y_m_per_s,v_w_x_m_per_s,v_w_y_m_per_s,p_w_pa,S,eps_p_bar,"
-            "K_m_per_s\n"
-         << std::setprecision( 9 );
+    _fd = createExclusive( partial ); // a planted symlink is not followed
+    _failed = false;
+    std::string text =
+        "time_s,stage,name,point_id,x_m,y_m,u_x_m,u_y_m,v_x_m_per_s,"
+        "v_y_m_per_s,v_w_x_m_per_s,v_w_y_m_per_s,p_w_pa,S,eps_p_bar,"
+        "K_m_per_s\n";
     for ( const std::string& line : kept )
-        _out << line << '\n';
-    _out.flush();
+        text += line + '\n';
+    append( text );
     // Due next as in the uninterrupted run: after the last row recorded
     // (not after the checkpoint's time, which may lie a rounding error
     // below a due time whose row the uninterrupted run writes next step).
@@ -139,12 +148,14 @@ void ProbeRecorder::record( const RunProgress& progress,
                             const HostSnapshot& snapshot )
 {
     const bool water = !snapshot.p_w.empty();
+    std::ostringstream rows;
+    rows << std::setprecision( 9 );
     for ( const Probe& probe : _probes )
     {
         const int p = probe.point;
         auto pair = [&]( const std::vector<double>& field )
-        { _out << ',' << field[2 * p] << ',' << field[2 * p + 1]; };
-        _out << timeText( progress.time_s ) << ',' << progress.stage << ','
+        { rows << ',' << field[2 * p] << ',' << field[2 * p + 1]; };
+        rows << timeText( progress.time_s ) << ',' << progress.stage << ','
              << probe.name << ',' << snapshot.id[p];
         pair( snapshot.x );
         pair( snapshot.displacement );
@@ -152,24 +163,34 @@ void ProbeRecorder::record( const RunProgress& progress,
         if ( water )
         {
             pair( snapshot.v_w );
-            _out << ',' << snapshot.p_w[p] << ',' << snapshot.S[p];
+            rows << ',' << snapshot.p_w[p] << ',' << snapshot.S[p];
         }
         else
-            _out << ",nan,nan,nan,nan";
-        _out << ',' << snapshot.eps_p_bar[p] << ','
+            rows << ",nan,nan,nan,nan";
+        rows << ',' << snapshot.eps_p_bar[p] << ','
              << _K_of_material[snapshot.material[p]] << '\n';
     }
-    _out.flush();
+    append( rows.str() );
     _next_time_s = nextMultiple( progress.time_s, _interval_s );
+}
+
+//---------------------------------------------------------------------------//
+void ProbeRecorder::append( const std::string& text )
+{
+    if ( _fd >= 0 && !_failed && !writeAll( _fd, text ) )
+        _failed = true;
 }
 
 //---------------------------------------------------------------------------//
 void ProbeRecorder::finish()
 {
-    if ( !_out.is_open() )
+    if ( _fd < 0 )
         return;
-    _out.close();
-    std::rename( ( _path + ".partial" ).c_str(), _path.c_str() );
+    if ( ::close( _fd ) != 0 )
+        _failed = true;
+    _fd = -1;
+    if ( !_failed )
+        std::rename( ( _path + ".partial" ).c_str(), _path.c_str() );
     _next_time_s = 1.0e300;
 }
 

@@ -4,7 +4,6 @@
 #include <io/mpm_case_config.hpp>
 #include <solver/mpm_run_observer.hpp>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -22,9 +21,11 @@ namespace mpm
   Each probe follows the material point nearest to its position when the
   run starts. K_m_per_s = k rho_w g / mu (g = 9.81 m/s^2) of the point's
   material, the saturated hydraulic conductivity (0 in a dry case, whose
-  water columns are "nan"). Rows go to probes.csv.partial, flushed per
-  record; finish() renames it to probes.csv, so a crash never leaves a
-  partial probes.csv behind.
+  water columns are "nan"). Rows go to probes.csv.partial, created
+  exclusively (a planted symlink is not followed) and written per record;
+  finish() renames it to probes.csv, so a crash never leaves a partial
+  probes.csv behind, and a failed write (a full disk) leaves the
+  .partial in place, never published.
 */
 class ProbeRecorder
 {
@@ -32,6 +33,10 @@ class ProbeRecorder
     //! Picks the probe points from the run's initial state.
     ProbeRecorder( const CaseConfig& config, const HostSnapshot& initial,
                    const std::string& out_dir );
+    //! Closes probes.csv.partial if finish() was not called (it stays).
+    ~ProbeRecorder();
+    ProbeRecorder( const ProbeRecorder& ) = delete;
+    ProbeRecorder& operator=( const ProbeRecorder& ) = delete;
 
     /*!
       \brief Opens probes.csv.partial. resume_time_s < 0: a new run;
@@ -45,8 +50,11 @@ class ProbeRecorder
     double nextTime() const { return _next_time_s; }
     //! Appends the rows of one record and schedules the next.
     void record( const RunProgress& progress, const HostSnapshot& snapshot );
-    //! Closes and renames probes.csv.partial to probes.csv.
+    //! Closes and renames probes.csv.partial to probes.csv, unless a
+    //! write failed (then the .partial stays; failed() is true).
     void finish();
+    //! True if a write to probes.csv.partial failed.
+    bool failed() const { return _failed; }
     //! Path of the finished file.
     std::string path() const { return _path; }
 
@@ -65,7 +73,11 @@ class ProbeRecorder
     double _interval_s = 0.0;
     double _next_time_s = 1.0e300;
     std::string _path;
-    std::ofstream _out;
+    int _fd = -1; //!< probes.csv.partial, -1 when closed
+    bool _failed = false;
+
+    //! Appends text to probes.csv.partial (failed() after an error).
+    void append( const std::string& text );
 };
 
 } // namespace mpm

@@ -41,4 +41,22 @@ int createExclusive( const std::string& path )
     return fd;
 }
 
+//---------------------------------------------------------------------------//
+bool writeAll( const int fd, const std::string& text )
+{
+    const char* data = text.data();
+    std::size_t left = text.size();
+    while ( left > 0 )
+    {
+        const ssize_t written = ::write( fd, data, left );
+        if ( written < 0 && errno == EINTR )
+            continue;
+        if ( written <= 0 )
+            return false;
+        data += written;
+        left -= static_cast<std::size_t>( written );
+    }
+    return true;
+}
+
 } // namespace mpm

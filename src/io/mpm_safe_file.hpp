@@ -26,6 +26,11 @@ void removeStale( const std::string& path );
 */
 int createExclusive( const std::string& path );
 
+//---------------------------------------------------------------------------//
+//! Writes all of `text` to the descriptor fd (retrying short writes and
+//! interruptions); false on an error (e.g. the disk is full).
+bool writeAll( int fd, const std::string& text );
+
 } // namespace mpm
 
 #endif // MPM_SAFE_FILE_HPP

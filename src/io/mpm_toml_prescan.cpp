@@ -1,7 +1,10 @@
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_toml_prescan.hpp>
 
+#include <cstdio>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace mpm
 {
@@ -56,17 +59,23 @@ class Scanner
             {
                 ++_line;
                 _column = 1;
+                _line_blank = true;
             }
             else
+            {
                 ++_column;
+                if ( _text[_pos] != ' ' && _text[_pos] != '\t' )
+                    _line_blank = false;
+            }
         }
     }
 
-    bool fail( const std::string& text )
+    bool fail( const std::string& text, const int column_offset = 0 )
     {
         toml::source_region where;
-        where.begin = { static_cast<toml::source_index>( _line ),
-                        static_cast<toml::source_index>( _column ) };
+        where.begin = {
+            static_cast<toml::source_index>( _line ),
+            static_cast<toml::source_index>( _column + column_offset ) };
         where.end = where.begin;
         where.path = _path;
         _diag.error( where, text );
@@ -81,25 +90,42 @@ class Scanner
         {
         case Lex::Comment:
             if ( c == '\n' )
-                _lex = Lex::Plain;
+            {
+                _lex = Lex::Plain; // the line break is plain text
+                return true;
+            }
             break;
         case Lex::Basic:
             if ( c == '\\' )
                 advance();
-            else if ( c == '"' || c == '\n' )
-                _lex = Lex::Plain;
+            else if ( c == '\n' )
+            {
+                _lex = Lex::Plain; // unterminated: toml++ reports it
+                return true;
+            }
+            else if ( c == '"' )
+                endString();
             break;
         case Lex::Literal:
-            if ( c == '\'' || c == '\n' )
+            if ( c == '\n' )
+            {
                 _lex = Lex::Plain;
+                return true;
+            }
+            if ( c == '\'' )
+                endString();
             break;
         case Lex::MultiBasic:
             if ( c == '\\' )
+            {
+                if ( !multiLineEscape() )
+                    return false;
                 advance();
+            }
             else if ( startsWith( "\"\"\"" ) )
             {
                 advance( 3 );
-                _lex = Lex::Plain;
+                endString();
                 return true;
             }
             break;
@@ -107,7 +133,7 @@ class Scanner
             if ( startsWith( "'''" ) )
             {
                 advance( 3 );
-                _lex = Lex::Plain;
+                endString();
                 return true;
             }
             break;
@@ -118,18 +144,54 @@ class Scanner
         return true;
     }
 
+    void endString()
+    {
+        _lex = Lex::Plain;
+        _prev = '"';
+    }
+
+    /*!
+      Whether a quote here opens a string for toml++: at the start of a
+      value (after '=', '[', ',' or a line break in an array) or of a key
+      (at the start of a line, after '[' of a table header, '{' or ',' of an
+      inline table, or a '.' between key parts). Elsewhere (after other
+      text of a value or key: 'e = 7"..."', 'e = 1."..."') toml++ reads the
+      quote as part of the value, and what follows too, outside any string.
+    */
+    bool opensString( const char prev ) const
+    {
+        switch ( prev )
+        {
+        case '\n':
+        case '=':
+        case '[':
+        case '{':
+        case ',':
+            return true;
+        case '.':
+            return _key;
+        default:
+            return false;
+        }
+    }
+
     bool plain( const char c )
     {
         if ( static_cast<unsigned char>( c ) >= 0x80 )
             return fail( "invalid TOML: a character outside ASCII outside a "
                          "string or comment (only strings and comments may "
                          "hold other characters)" );
+        const char prev = _prev;
+        if ( c != ' ' && c != '\t' )
+            _prev = c;
         switch ( c )
         {
         case '#':
             _lex = Lex::Comment;
             break;
         case '"':
+            if ( !opensString( prev ) )
+                break;
             if ( startsWith( "\"\"\"" ) )
             {
                 advance( 3 );
@@ -139,6 +201,8 @@ class Scanner
             _lex = Lex::Basic;
             break;
         case '\'':
+            if ( !opensString( prev ) )
+                break;
             if ( startsWith( "'''" ) )
             {
                 advance( 3 );
@@ -147,34 +211,199 @@ class Scanner
             }
             _lex = Lex::Literal;
             break;
-        case '[':
-        case '{':
-            ++_depth;
-            _dots = 0;
+        case 'T':
+        case 't':
+            if ( !_key && !timeAfterDate() )
+                return false;
             break;
-        case ']':
-        case '}':
-            _depth = _depth > 0 ? _depth - 1 : 0;
+        case '[':
+            if ( _open.empty() && _line_blank )
+            {
+                if ( !tableHeaderStart() )
+                    return false;
+                _in_header = true;
+            }
             _dots = 0;
+            _open.push_back( { _in_header ? 'h' : c, _line, _column } );
+            _key = _in_header; // a table name, or the values of an array
+            break;
+        case '{':
+            _dots = 0;
+            _open.push_back( { c, _line, _column } );
+            _key = true;
+            break;
+        case '}':
+            // toml++ 3.3 parses a '}' where an array expects a value as
+            // the start of a value, breaking the precondition of its value
+            // parser (an assertion in debug builds, undefined behaviour in
+            // release ones): "e = [}". Never valid TOML.
+            if ( !_open.empty() && _open.back().bracket == '[' )
+                return fail( "invalid TOML: expected a value or ']' in the "
+                             "array opened at line " +
+                             std::to_string( _open.back().line ) + ", column " +
+                             std::to_string( _open.back().column ) +
+                             ", found '}'" );
+            [[fallthrough]];
+        case ']':
+            _dots = 0;
+            if ( !_open.empty() )
+                _open.pop_back();
+            _in_header = _in_header && !_open.empty();
+            _key = false; // after a value (or a table name)
             break;
         case '.':
             ++_dots;
             break;
         case '=':
+            _dots = 0;
+            _key = false;
+            break;
         case ',':
+            _dots = 0;
+            _key = !_open.empty() && _open.back().bracket == '{';
+            break;
         case '\n':
             _dots = 0;
+            if ( _open.empty() )
+                _key = true;
+            else if ( _open.back().bracket == '[' )
+                _key = false;
             break;
         default:
             break;
         }
-        if ( _depth + _dots > max_nesting_depth )
+        if ( static_cast<int>( _open.size() ) + _dots > max_nesting_depth )
             return fail( "invalid case file: keys, arrays and inline tables "
                          "nested deeper than " +
                          std::to_string( max_nesting_depth ) +
                          " levels (dotted key parts, '[' and '{' counted)" );
         advance();
         return true;
+    }
+
+    /*!
+      At a '\\' in a multi-line basic string: toml++ 3.3 asks whether the
+      character after it, or after a line-ending backslash the first one
+      that is not a blank or a line break, is whitespace, and reaches
+      __builtin_unreachable (undefined behaviour in release builds) for
+      most characters outside ASCII (U+00A0 to U+0499 among them: Latin-1,
+      Greek, Cyrillic). Valid TOML, refused here.
+    */
+    bool multiLineEscape()
+    {
+        auto blank = []( const char b )
+        { return b == ' ' || b == '\t' || b == '\r' || b == '\n'; };
+        std::size_t at = _pos + 1;
+        auto outside = [&]()
+        {
+            return at < _text.size() &&
+                   static_cast<unsigned char>( _text[at] ) >= 0x80;
+        };
+        if ( !outside() )
+        {
+            if ( at == _text.size() || !blank( _text[at] ) )
+                return true;
+            while ( at < _text.size() && blank( _text[at] ) )
+                ++at;
+            if ( !outside() )
+                return true;
+        }
+        // Report at `at`: its line and column.
+        const int line = _line, column = _column;
+        for ( std::size_t k = _pos; k < at; ++k )
+        {
+            if ( _text[k] == '\n' )
+            {
+                ++_line;
+                _column = 1;
+            }
+            else
+                ++_column;
+        }
+        fail( "invalid case file: a character outside ASCII right after a "
+              "backslash or a line-ending backslash in a multi-line string, "
+              "which the TOML parser (toml++ 3.3) cannot read; start with an "
+              "ASCII character there or use a literal string '''...'''" );
+        _line = line;
+        _column = column;
+        return false;
+    }
+
+    /*!
+      At a 'T' or 't' in a value: after a date YYYY-MM-DD, the time must
+      start with a digit. toml++ 3.3 takes "1978-05-27T:" for a date-time
+      and calls its time parser on the ':', whose precondition it breaks
+      (an assertion in debug builds, undefined behaviour in release ones).
+    */
+    bool timeAfterDate()
+    {
+        if ( _pos < 10 || _pos + 1 >= _text.size() )
+            return true;
+        const std::string_view date = _text.substr( _pos - 10, 10 );
+        for ( std::size_t k = 0; k < date.size(); ++k )
+        {
+            const bool digit = date[k] >= '0' && date[k] <= '9';
+            if ( ( k == 4 || k == 7 ) ? date[k] != '-' : !digit )
+                return true;
+        }
+        const char next = _text[_pos + 1];
+        if ( next >= '0' && next <= '9' )
+            return true;
+        return fail( "invalid TOML: expected a time HH:MM:SS after the date "
+                     "and '" +
+                         std::string( 1, _text[_pos] ) + "', found " +
+                         describe( next ),
+                     1 );
+    }
+
+    /*!
+      At the '[' of a table header ('[' or '[[' first on a line, outside
+      any value): the name must start with a bare key character or a quote
+      (or be ']' or the end: toml++ reports those). toml++ 3.3 calls its
+      key parser on any other character, whose precondition it breaks:
+      an assertion in debug builds, undefined behaviour in release ones
+      ("[\n", "[[[a]]]", "[=").
+    */
+    bool tableHeaderStart()
+    {
+        std::size_t at = _pos + 1;
+        auto blanks = [&]()
+        {
+            const std::size_t from = at;
+            while ( at < _text.size() &&
+                    ( _text[at] == ' ' || _text[at] == '\t' ) )
+                ++at;
+            return at > from;
+        };
+        if ( !blanks() && at < _text.size() && _text[at] == '[' )
+        {
+            ++at;
+            blanks();
+        }
+        if ( at == _text.size() )
+            return true;
+        const char c = _text[at];
+        if ( isBareKeyCharacter( c ) || c == '"' || c == '\'' || c == ']' )
+            return true;
+        return fail( "invalid TOML: expected a table name (a bare or quoted "
+                     "key) after '[', found " +
+                         describe( c ),
+                     static_cast<int>( at - _pos ) );
+    }
+
+    //! A character for messages: 'c', or its name or code.
+    static std::string describe( const char c )
+    {
+        if ( c == '\n' || c == '\r' )
+            return "the end of the line";
+        const auto u = static_cast<unsigned char>( c );
+        if ( u < 0x20 || u >= 0x7f )
+        {
+            char code[8];
+            std::snprintf( code, sizeof code, "0x%02X", u );
+            return std::string( "the byte " ) + code;
+        }
+        return "'" + std::string( 1, c ) + "'";
     }
 
     std::string_view _text;
@@ -184,8 +413,23 @@ class Scanner
     int _line = 1;
     int _column = 1;
     Lex _lex = Lex::Plain;
-    int _depth = 0;
     int _dots = 0;
+    //! The open '[' and '{', innermost last (the nesting depth; at most
+    //! max_nesting_depth + 1: deeper fails).
+    struct Open
+    {
+        char bracket; //!< '[', '{' or 'h' (of a table header)
+        int line;
+        int column;
+    };
+    std::vector<Open> _open;
+    bool _in_header = false; //!< in the brackets of a table header
+    //! In a key (or table name), not a value: where '.' separates key parts.
+    bool _key = true;
+    //! The last character of plain text that is not a blank ('"' for the
+    //! end of a string, '\n' at the start).
+    char _prev = '\n';
+    bool _line_blank = true; //!< only blanks so far on the current line
 };
 
 } // namespace

@@ -168,6 +168,11 @@ std::vector<int> waterNodeFlags( const GridConfig& grid,
         }
     for ( const BoundaryConfig& bc : boundaries )
     {
+        // A drained wall lets the water through: it changes no tie (clearing
+        // them would open a drain where it meets an impermeable grid edge).
+        if ( bc.where == BoundarySelector::Polyline &&
+             bc.hydraulic == HydraulicCondition::Drained )
+            continue;
         // Reuse the solid selector: the nodes a fixed condition would pick.
         BoundaryConfig selector = bc;
         selector.condition = BoundaryCondition::Fixed;

@@ -52,7 +52,8 @@ double horizontalExtent( const std::vector<bool>& picked,
 
 //! Water tie flags (NodeFlag bits) of every node, flat index i * (ny + 1) + j:
 //! grid edges are impermeable (normal water velocity = solid's) unless a
-//! boundary drains them; an impermeable below_polyline boundary ties both.
+//! boundary drains them; an impermeable below_polyline boundary or interior
+//! wall (polyline) ties both components; a drained wall changes no tie.
 std::vector<int>
 waterNodeFlags( const GridConfig& grid,
                 const std::vector<BoundaryConfig>& boundaries );

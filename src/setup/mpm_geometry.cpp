@@ -76,6 +76,19 @@ bool adjacentEdgesOverlap( const Point2& a, const Point2& b, const Point2& c )
     return dot < 0.0;
 }
 
+//---------------------------------------------------------------------------//
+// Whether edge ab crosses the line at height y (half-open in y: one of its
+// ends above y, the other not) and where (x_cross). pointInPolygon and
+// rowCrossings share it, so they find the same crossings to the last bit.
+bool edgeCrossing( const Point2& a, const Point2& b, const double y,
+                   double& x_cross )
+{
+    if ( ( a[1] > y ) == ( b[1] > y ) )
+        return false;
+    x_cross = a[0] + ( y - a[1] ) * ( b[0] - a[0] ) / ( b[1] - a[1] );
+    return true;
+}
+
 } // namespace
 
 //---------------------------------------------------------------------------//
@@ -89,17 +102,29 @@ bool pointInPolygon( const std::vector<Point2>& polygon, const Point2& p )
     bool inside = false;
     for ( std::size_t i = 0, j = n - 1; i < n; j = i++ )
     {
-        const Point2& a = polygon[i];
-        const Point2& b = polygon[j];
-        if ( ( a[1] > p[1] ) != ( b[1] > p[1] ) )
-        {
-            const double x_cross =
-                a[0] + ( p[1] - a[1] ) * ( b[0] - a[0] ) / ( b[1] - a[1] );
-            if ( p[0] < x_cross )
-                inside = !inside;
-        }
+        double x_cross = 0.0;
+        if ( edgeCrossing( polygon[i], polygon[j], p[1], x_cross ) &&
+             p[0] < x_cross )
+            inside = !inside;
     }
     return inside;
+}
+
+//---------------------------------------------------------------------------//
+void rowCrossings( const std::vector<Point2>& polygon, const double y,
+                   std::vector<double>& crossings )
+{
+    crossings.clear();
+    const std::size_t n = vertexCount( polygon );
+    if ( n < 3 )
+        return;
+    for ( std::size_t i = 0, j = n - 1; i < n; j = i++ )
+    {
+        double x_cross = 0.0;
+        if ( edgeCrossing( polygon[i], polygon[j], y, x_cross ) )
+            crossings.push_back( x_cross );
+    }
+    std::sort( crossings.begin(), crossings.end() );
 }
 
 //---------------------------------------------------------------------------//
@@ -171,6 +196,30 @@ double polylineY( const std::vector<Point2>& polyline, const double x )
     const Point2& a = *( it - 1 );
     const double t = ( x - a[0] ) / ( b[0] - a[0] );
     return a[1] + t * ( b[1] - a[1] );
+}
+
+//---------------------------------------------------------------------------//
+bool segmentMeetsOpenSquare( const Point2& a, const Point2& b, const Point2& c,
+                             const double r )
+{
+    // The parameters t of a + t (b - a) inside the square form the open
+    // interval (t_lo, t_hi) (Liang–Barsky); it must meet [0, 1].
+    double t_lo = -1.0e300, t_hi = 1.0e300;
+    for ( int d = 0; d < 2; ++d )
+    {
+        const double step = b[d] - a[d];
+        const double lo = c[d] - r - a[d], hi = c[d] + r - a[d];
+        if ( step == 0.0 )
+        {
+            if ( !( lo < 0.0 && 0.0 < hi ) )
+                return false;
+            continue;
+        }
+        const double t0 = lo / step, t1 = hi / step;
+        t_lo = std::max( t_lo, std::min( t0, t1 ) );
+        t_hi = std::min( t_hi, std::max( t0, t1 ) );
+    }
+    return t_lo < t_hi && t_lo < 1.0 && t_hi > 0.0;
 }
 
 } // namespace geometry

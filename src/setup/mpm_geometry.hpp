@@ -27,6 +27,18 @@ bool pointInPolygon( const std::vector<Point2>& polygon, const Point2& p );
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief Where the polygon's edges cross the line at height y, in
+  increasing x: pointInPolygon( polygon, {x, y} ) is true exactly if an
+  odd number of them are > x (the same test, edge by edge, with the same
+  numbers). Empty for a polygon that pointInPolygon finds empty.
+
+  \param crossings Filled (its storage is reused).
+*/
+void rowCrossings( const std::vector<Point2>& polygon, double y,
+                   std::vector<double>& crossings );
+
+//---------------------------------------------------------------------------//
+/*!
   \brief Absolute area of a simple polygon (shoelace formula), m^2 for
   vertices in m.
 */
@@ -57,6 +69,17 @@ bool findSelfIntersection( const std::vector<Point2>& polygon, int& edge_a,
   \throw std::invalid_argument if the polyline has no vertex.
 */
 double polylineY( const std::vector<Point2>& polyline, double x );
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Whether the closed segment ab meets the open axis-aligned square
+  of half-width r centred on c: whether some point of the segment lies
+  less than r from c in both x and y (its max-norm distance to c is < r).
+
+  Exact for vertical, horizontal and degenerate (a == b) segments.
+*/
+bool segmentMeetsOpenSquare( const Point2& a, const Point2& b, const Point2& c,
+                             double r );
 
 } // namespace geometry
 } // namespace mpm

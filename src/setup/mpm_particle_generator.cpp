@@ -1,9 +1,12 @@
 #include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
+#include <setup/mpm_wall_nodes.hpp>
 
-#include <mpm_device_type.hpp>
+#include <mpm_status_flags.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mpm
 {
@@ -55,29 +58,75 @@ InitialPoints generatePoints( const CaseConfig& config )
     const double h = grid.cell_size_m;
     const double vol = h * h / ( n * n );
     const std::vector<double> xi = gaussPositions( n );
+    const std::size_t n_bodies = config.bodies.size();
+    // The column of cells of x, within [-1, cells[0]].
+    auto column = [&]( const double x )
+    {
+        const double c = std::floor( ( x - grid.origin_m[0] ) / h );
+        return static_cast<int>(
+            std::max( -1.0, std::min<double>( c, grid.cells[0] ) ) );
+    };
 
+    // Row by row of points (one y), where each body's edges cross the row
+    // (geometry::rowCrossings: the crossings of geometry::pointInPolygon).
+    // A point is inside a body if an odd number of them lie right of it,
+    // between crossings 2k and 2k + 1: only the cells between those (and
+    // one on each side, for rounding) are visited, and a point costs a
+    // binary search per body. Points, order and owners are those of
+    // testing every point of the grid against every body in turn, in a
+    // time that grows with the rows x edges and the points, not the cells.
+    std::vector<std::vector<double>> crossings( n * n_bodies );
+    std::vector<double> ys( n );            // the y of the n rows of points
+    std::vector<std::pair<int, int>> spans; // cells that may hold points
     InitialPoints points;
     for ( int cj = 0; cj < grid.cells[1]; ++cj )
-        for ( int ci = 0; ci < grid.cells[0]; ++ci )
-            for ( int b = 0; b < n; ++b )
-                for ( int a = 0; a < n; ++a )
-                {
-                    const Point2 p = { grid.origin_m[0] + ( ci + xi[a] ) * h,
-                                       grid.origin_m[1] + ( cj + xi[b] ) * h };
-                    for ( std::size_t body_id = 0;
-                          body_id < config.bodies.size(); ++body_id )
+    {
+        spans.clear();
+        for ( int b = 0; b < n; ++b )
+        {
+            ys[b] = grid.origin_m[1] + ( cj + xi[b] ) * h;
+            for ( std::size_t k = 0; k < n_bodies; ++k )
+            {
+                std::vector<double>& row = crossings[b * n_bodies + k];
+                geometry::rowCrossings( config.bodies[k].polygon_m, ys[b],
+                                        row );
+                for ( std::size_t i = 0; i + 1 < row.size(); i += 2 )
+                    spans.emplace_back( std::max( 0, column( row[i] ) - 1 ),
+                                        std::min( grid.cells[0] - 1,
+                                                  column( row[i + 1] ) + 1 ) );
+            }
+        }
+        std::sort( spans.begin(), spans.end() );
+        int next = 0; // the first cell not yet visited in this row
+        for ( const auto& [span_begin, span_last] : spans )
+            for ( int ci = std::max( span_begin, next ); ci <= span_last;
+                  next = ++ci )
+                for ( int b = 0; b < n; ++b )
+                    for ( int a = 0; a < n; ++a )
                     {
-                        const BodyConfig& body = config.bodies[body_id];
-                        if ( !geometry::pointInPolygon( body.polygon_m, p ) )
-                            continue;
-                        points.x.push_back( p[0] );
-                        points.x.push_back( p[1] );
-                        points.vol.push_back( vol );
-                        points.material.push_back( body.material_id );
-                        points.body.push_back( static_cast<int>( body_id ) );
-                        break;
+                        const Point2 p = {
+                            grid.origin_m[0] + ( ci + xi[a] ) * h, ys[b] };
+                        for ( std::size_t body_id = 0; body_id < n_bodies;
+                              ++body_id )
+                        {
+                            const std::vector<double>& row =
+                                crossings[b * n_bodies + body_id];
+                            const auto right =
+                                row.end() - std::upper_bound( row.begin(),
+                                                              row.end(), p[0] );
+                            if ( right % 2 == 0 )
+                                continue;
+                            const BodyConfig& body = config.bodies[body_id];
+                            points.x.push_back( p[0] );
+                            points.x.push_back( p[1] );
+                            points.vol.push_back( vol );
+                            points.material.push_back( body.material_id );
+                            points.body.push_back(
+                                static_cast<int>( body_id ) );
+                            break;
+                        }
                     }
-                }
+    }
     return points;
 }
 
@@ -96,6 +145,9 @@ std::vector<int> nodeFlags( const GridConfig& grid,
         if ( !bc.constrains_solid )
             continue;
         const int flag = flagOf( bc.condition );
+        const std::vector<int> wall = bc.where == BoundarySelector::Polyline
+                                          ? wallNodes( grid, bc.polyline_m )
+                                          : std::vector<int>();
         for ( int i = 0; i < nx1; ++i )
             for ( int j = 0; j < ny1; ++j )
             {
@@ -122,12 +174,26 @@ std::vector<int> nodeFlags( const GridConfig& grid,
                                         tolerance;
                     break;
                 }
+                case BoundarySelector::Polyline:
+                    selected = wall[i * ny1 + j] != 0;
+                    break;
                 }
                 if ( selected )
                     flags[i * ny1 + j] |= flag;
             }
     }
     return flags;
+}
+
+//---------------------------------------------------------------------------//
+std::vector<BoundaryConfig>
+interiorWalls( const std::vector<BoundaryConfig>& boundaries, const bool walls )
+{
+    std::vector<BoundaryConfig> result;
+    for ( const BoundaryConfig& bc : boundaries )
+        if ( ( bc.where == BoundarySelector::Polyline ) == walls )
+            result.push_back( bc );
+    return result;
 }
 
 } // namespace mpm

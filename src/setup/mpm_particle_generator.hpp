@@ -28,6 +28,13 @@ InitialPoints generatePoints( const CaseConfig& config );
 std::vector<int> nodeFlags( const GridConfig& grid,
                             const std::vector<BoundaryConfig>& boundaries );
 
+/*!
+  \brief The interior walls (where = "polyline") of `boundaries` if `walls`,
+  else the other boundaries, in their order.
+*/
+std::vector<BoundaryConfig>
+interiorWalls( const std::vector<BoundaryConfig>& boundaries, bool walls );
+
 } // namespace mpm
 
 #endif // MPM_PARTICLE_GENERATOR_HPP

@@ -38,7 +38,24 @@ nlohmann::json deformationMetrics( const HostSnapshot& snapshot,
              { "max_x_m", max_x } };
 }
 
-nlohmann::json stageMetrics( const StageSummary& stage )
+nlohmann::json waterBalanceMetrics( const physics::WaterBalance& water )
+{
+    return {
+        { "unit", "m3 of water (at its reference density) per m out "
+                  "of plane" },
+        { "stored_start", water.stored_start },
+        { "stored_end", water.stored_end },
+        { "carried_off_grid", water.carried_off_end - water.carried_off_start },
+        { "stored_change", water.storedChange() },
+        { "point_inflow", water.point_inflow },
+        { "runoff", water.runoff },
+        { "prescribed_pressure", water.prescribed },
+        { "flow_in", water.flow_in },
+        { "closure_error", water.closureError() },
+        { "closure_error_relative", water.relativeClosureError() } };
+}
+
+nlohmann::json stageMetrics( const StageSummary& stage, const bool two_phase )
 {
     nlohmann::json j = { { "name", stage.name },
                          { "type", stage.type },
@@ -53,6 +70,17 @@ nlohmann::json stageMetrics( const StageSummary& stage )
         j["ke_ratio"] = stage.ke_ratio;
         j["converged"] = stage.converged;
     }
+    if ( two_phase )
+        j["water_balance"] = waterBalanceMetrics( stage.water );
+    if ( stage.speed_percentile > 0.0 )
+        j["static_stop"] = {
+            { "speed_percentile", stage.speed_percentile },
+            { "static_speed_m_per_s", stage.static_speed_m_per_s },
+            { "speed_at_percentile_m_per_s",
+              stage.speed_at_percentile_m_per_s },
+            { "points_not_below_static_speed",
+              stage.points_not_below_static_speed },
+            { "allowed_points_not_below", stage.allowed_points_not_below } };
     return j;
 }
 

@@ -33,8 +33,13 @@ struct PorePressureExtremes
     void write( nlohmann::json& metrics ) const;
 };
 
-//! JSON of one stage summary.
-nlohmann::json stageMetrics( const StageSummary& stage );
+//! JSON of one stage summary; with `two_phase`, its water balance.
+nlohmann::json stageMetrics( const StageSummary& stage, bool two_phase );
+
+//! JSON of a water balance (m^3 per metre out of plane): the stored water
+//! at the start and end, each term, the closure error and its ratio to
+//! the largest term.
+nlohmann::json waterBalanceMetrics( const physics::WaterBalance& water );
 
 } // namespace mpm
 

@@ -329,6 +329,17 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     const double wall_s = ( resumed ? resumed->wall_s : 0.0 ) + session_wall_s;
     writer.finalize();
     probes.finish();
+    if ( probes.failed() )
+    {
+        const std::string error = "a write to " + probes.path() +
+                                  ".partial failed (disk full?); it was "
+                                  "not renamed to " +
+                                  probes.path();
+        metrics["probes_error"] = error;
+        std::cerr << "rainslide: error: " << error << "\n";
+        if ( status == RunStatus::Completed )
+            status = RunStatus::Failed;
+    }
     printer.finish();
 
     const long steps = sim.step;
@@ -375,7 +386,9 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
         { "final_max_wave_speed_m_per_s", limit.max_wave_speed } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
-        metrics["stages"].push_back( stageMetrics( stage ) );
+        metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );
+    if ( sim.twoPhase() && !summary.stages.empty() )
+        metrics["water_balance"] = waterBalanceMetrics( summary.water );
     observer.pore_pressure.write( metrics );
     if ( observer.last_snapshot.num_points > 0 )
         metrics["deformation"] =

@@ -1,6 +1,8 @@
 #ifndef MPM_RUN_OBSERVER_HPP
 #define MPM_RUN_OBSERVER_HPP
 
+#include <physics/mpm_water_volumes.hpp>
+
 #include <string>
 #include <vector>
 
@@ -41,6 +43,17 @@ struct StageSummary
     //! converged), "static_again" (StaticStop) or "interrupted".
     std::string stop_reason = "duration";
     double max_speed_m_per_s = 0.0; //!< largest point speed in the stage
+    //! Two-phase: the stage's water balance (zero in a dry scene).
+    physics::WaterBalance water;
+    // Static stop (recordSpeedStatistic, at the stage end): the percentile
+    // p it watches (0: the stage has no static stop), its static speed,
+    // the p-th percentile of the active points' speeds (nearest rank),
+    // the points at or above the static speed and how many may be.
+    double speed_percentile = 0.0;
+    double static_speed_m_per_s = 0.0;
+    double speed_at_percentile_m_per_s = 0.0;
+    long points_not_below_static_speed = 0;
+    long allowed_points_not_below = 0;
 };
 
 //! Host copies of every particle field, point-major.

@@ -6,6 +6,7 @@
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
 #include <solver/mpm_stage_state.hpp>
+#include <solver/mpm_static_stop.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -80,31 +81,6 @@ inline double chooseTimeStep( const SolverConfig& solver,
         throw SimulationError( msg.str() );
     }
     return solver.dt_s;
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Static stop of a dynamic stage: updates the state with this step's
-  largest point speed and returns true once the stage should end (a slide,
-  then every point slower than the static speed for the window).
-  maxDisplacement() gives the largest point displacement; it is called only
-  until a slide has been seen.
-*/
-template <class MaxDisplacement>
-bool staticAgain( const StaticStop& stop, const double max_speed,
-                  const double stage_time_s, MaxDisplacement&& maxDisplacement,
-                  StageLoopState& state )
-{
-    if ( !state.has_moved && maxDisplacement() > stop.slide_displacement_m )
-        state.has_moved = true;
-    if ( !state.has_moved || !( max_speed < stop.static_speed_m_per_s ) )
-    {
-        state.static_since = -1.0;
-        return false;
-    }
-    if ( state.static_since < 0.0 )
-        state.static_since = stage_time_s;
-    return stage_time_s - state.static_since >= stop.window_s;
 }
 
 //---------------------------------------------------------------------------//
@@ -233,6 +209,8 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                     std::to_string( state.stage ) + "]." + key +
                                     "': selects no material point at the "
                                     "stage start" );
+            const WaterContent water = sim.waterContent();
+            stage_summary.water.begin( water.active, water.removed );
         }
         const StepSettings settings{ stage.gravity_m_per_s2[0],
                                      stage.gravity_m_per_s2[1], stage.damping };
@@ -271,6 +249,7 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                progress.stage_time_s );
             sim.advance( dt, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
+            stage_summary.water.addStep( sim.stepWater() );
 
             progress.step = sim.step;
             ++progress.stage_step;
@@ -322,8 +301,15 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 }
             }
             else if ( stage.static_stop.enabled() &&
-                      staticAgain(
-                          stage.static_stop, max_speed, progress.stage_time_s,
+                      staticAgainIf(
+                          stage.static_stop,
+                          [&]()
+                          {
+                              return speedStatisticBelow(
+                                  sim, stage.static_stop, max_speed,
+                                  progress.active_points );
+                          },
+                          progress.stage_time_s,
                           [&sim]() { return sim.maxDisplacement(); }, state ) )
             {
                 stage_summary.stop_reason = "static_again";
@@ -333,13 +319,22 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
 
         stage_summary.steps = progress.stage_step;
         stage_summary.duration_s = progress.stage_time_s;
-        observer.onSnapshot( progress, hostSnapshot( sim ) );
+        const WaterContent water = sim.waterContent();
+        stage_summary.water.end( water.active, water.removed );
+        const HostSnapshot stage_end = hostSnapshot( sim );
+        observer.onSnapshot( progress, stage_end );
+        if ( !quasi_static && stage.static_stop.enabled() )
+            recordSpeedStatistic( stage.static_stop, stage_end, stage_summary );
         if ( stage.reset_displacement && !summary.interrupted )
             sim.resetDisplacement();
         observer.onStageEnd( progress, stage_summary );
         summary.steps += stage_summary.steps;
         summary.dt_min_s = std::min( summary.dt_min_s, stage_summary.dt_min_s );
         summary.dt_max_s = std::max( summary.dt_max_s, stage_summary.dt_max_s );
+        if ( summary.stages.empty() )
+            summary.water = stage_summary.water;
+        else
+            summary.water.append( stage_summary.water );
         summary.stages.push_back( stage_summary );
         state.stage_started = false;
         if ( summary.interrupted )

@@ -16,6 +16,7 @@
 #include <mpm_pore_pressure.hpp>
 #include <mpm_timestep.hpp>
 #include <mpm_velocity_gradient.hpp>
+#include <mpm_water_content.hpp>
 #include <mpm_water_views.hpp>
 #include <setup/mpm_base_slivers.hpp>
 #include <setup/mpm_retention_tables.hpp>
@@ -123,7 +124,10 @@ class Simulation
         materials = makeMaterialTable( stage.materials );
         if ( analysis == AnalysisType::Unsaturated && solver.retention_table )
             _retention_tables.attach( materials );
-        std::vector<int> flags = nodeFlags( grid_config, stage.boundaries );
+        // Interior walls are added after fixBaseSlivers: the empty cells
+        // beside a wall are no soil sliver (they would all be fixed).
+        std::vector<int> flags =
+            nodeFlags( grid_config, interiorWalls( stage.boundaries, false ) );
         std::vector<int> water_flags;
         if ( twoPhase() )
             water_flags = waterNodeFlags( grid_config, stage.boundaries );
@@ -134,6 +138,10 @@ class Simulation
         if ( complete )
             fixBaseSlivers( grid.geometry, activePositions(), flags,
                             &water_flags );
+        const std::vector<int> walls =
+            nodeFlags( grid_config, interiorWalls( stage.boundaries, true ) );
+        for ( std::size_t n = 0; n < flags.size(); ++n )
+            flags[n] |= walls[n];
         copyNodeFlags( flags, grid.flags_i );
         _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
                               : std::vector<int>();
@@ -176,6 +184,7 @@ class Simulation
         num_removed += report.num_removed;
         time += dt;
         ++step;
+        _step_water = report.water;
         _diagnostics = report.diagnostics;
         _diagnostics_step = step;
         if ( report.first_outside >= 0 )
@@ -224,6 +233,22 @@ class Simulation
         return diagnosticsCurrent()
                    ? std::sqrt( _diagnostics.max_speed2 )
                    : mpm::maxPointSpeed( ExecSpace(), particles );
+    }
+
+    //! The water the last step's Eq. 8 moved (zero in a dry scene).
+    const physics::WaterStepVolumes& stepWater() const { return _step_water; }
+
+    //! Water held by the points now (zero in a dry scene).
+    WaterContent waterContent() const
+    {
+        return mpm::waterContent( ExecSpace(), particles, water_particles,
+                                  water );
+    }
+
+    //! Number of active points with a solid speed >= `speed` (m/s).
+    long pointsNotBelowSpeed( const double speed ) const
+    {
+        return countPointsNotBelowSpeed( ExecSpace(), particles, speed );
     }
 
     //! Largest displacement |x - x0| of the active points, m.
@@ -347,17 +372,31 @@ class Simulation
             cellAverages( exec );
         const bool saturated = analysis == AnalysisType::Saturated;
         const auto pore_pressure = porePressurePointUpdate(
-            water_particles, water, dt, saturated, _retention_current,
-            conditions.prescribed_p_w, conditions.prescribed_hold,
-            conditions.inflow_rate, conditions.inflow_ponding );
-        const PointUpdateReport report = updatePointsTwoPhase(
+            particles, water_particles, water, dt, saturated,
+            _retention_current, conditions.prescribed_p_w,
+            conditions.prescribed_hold, conditions.inflow_rate,
+            conditions.inflow_ponding );
+        PointUpdateReport report = updatePointsTwoPhase(
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,
             pore_pressure, base );
         if ( solver.cell_equilibrium )
-            cellWaterEquilibrium( exec, particles, water_particles,
-                                  grid.geometry, materials, water, saturated,
-                                  solver.cell_pressure_slope, _cell_lists );
+        {
+            // It changes S after the point update's CFL reduction: its own
+            // limit replaces that one (a separate reduction if it did not
+            // list every active point).
+            const CellEquilibriumLimit after = cellWaterEquilibrium(
+                exec, particles, water_particles, grid.geometry, materials,
+                water, saturated, solver.cell_pressure_slope, _cell_lists );
+            const WaveSpeedLimit limit =
+                after.listed == numActivePoints() - report.num_removed
+                    ? after.limit
+                    : criticalTimeStepTwoPhase( exec, particles,
+                                                water_particles, materials,
+                                                water, grid.geometry.h );
+            report.diagnostics.dt_limit = limit.dt_limit;
+            report.diagnostics.max_wave_speed = limit.max_wave_speed;
+        }
         // S_p and dS_dp_p now hold the retention law at p_w_p.
         _retention_current = !saturated;
         return report;
@@ -408,6 +447,7 @@ class Simulation
     BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).
     StepDiagnostics _diagnostics{ 0.0, 0.0, 0.0, 0.0, 0 };
+    physics::WaterStepVolumes _step_water; //!< of the last step
     long _diagnostics_step = -1;
     //! True if S_p, dS_dp_p are the retention law's values at p_w_p.
     bool _retention_current = false;

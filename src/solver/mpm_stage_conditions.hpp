@@ -35,7 +35,8 @@ struct StageConditions
     Kokkos::View<int*, device_type> prescribed_hold{ "prescribed_hold", 0 };
     //! Current force on one point of each load group, N.
     LoadForceView<ExecSpace> load_force{ "load_force", 0 };
-    //! Current water inflow of each inflow per unit point volume, 1/s.
+    //! Current water inflow of each inflow per unit initial point volume
+    //! (vol0_p), 1/s.
     Kokkos::View<double*, device_type> inflow_rate{ "inflow_rate", 0 };
     //! 1 if the inflow ponds (caps p_w at 0 on its points), else 0.
     Kokkos::View<int*, device_type> inflow_ponding{ "inflow_ponding", 0 };
@@ -44,7 +45,8 @@ struct StageConditions
     Kokkos::View<double***, device_type> inflow_flux_i{ "inflow_flux_i", 0, 0,
                                                         0 };
     std::vector<WaterInflow> inflows;
-    std::vector<double> inflow_volumes; //!< volume of the points fed, m^3/m
+    //! Initial volume (vol0_p) of the points fed, m^3/m.
+    std::vector<double> inflow_volumes;
     //! Stage time of the next surface re-detection of the inflows that
     //! follow the surface (1e300 if none does).
     double next_surface_update_s = 1.0e300;
@@ -146,8 +148,10 @@ struct StageConditions
     {
         auto follows = [&]( const int f )
         { return inflows[f].follow_surface_interval_s > 0.0; };
+        // Shared by the initial volumes (PorePressurePointUpdate divides by
+        // the current one): the water added is exactly the prescribed.
         const auto vol_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), _particles.vol_p );
+            Kokkos::HostSpace(), _particles.vol0_p );
         auto inflow_h = Kokkos::create_mirror_view_and_copy(
             Kokkos::HostSpace(), _water_particles.inflow_p );
         auto weight_h = Kokkos::create_mirror_view_and_copy(

@@ -20,6 +20,8 @@ struct RunSummary
     double dt_min_s = 1.0e300;
     double dt_max_s = 0.0;
     bool interrupted = false; //!< stopped by RunObserver::stopRequested
+    //! Two-phase: the water balance of the finished stages.
+    physics::WaterBalance water;
 };
 
 //---------------------------------------------------------------------------//
@@ -54,8 +56,8 @@ struct StageLoopState
     double below_since = -1.0;
     //! Static stop: a point has moved farther than the slide displacement.
     bool has_moved = false;
-    //! Static stop: stage time since which all points are slower than the
-    //! static speed (after moving), or -1.
+    //! Static stop: stage time since which the speed statistic is below
+    //! the static speed (after moving), or -1.
     double static_since = -1.0;
     double next_snapshot_s = 0.0;   //!< stage time of the next snapshot
     double next_checkpoint_s = 0.0; //!< run time of the next checkpoint
@@ -87,6 +89,20 @@ struct StageLoopState
 };
 
 //---------------------------------------------------------------------------//
+//! Calls f(name, field) for every field of a physics::WaterBalance.
+template <class Balance, class F>
+void visitWaterBalance( Balance& w, F&& f )
+{
+    f( "stored_start_m3_per_m", w.stored_start );
+    f( "stored_end_m3_per_m", w.stored_end );
+    f( "carried_off_start_m3_per_m", w.carried_off_start );
+    f( "carried_off_end_m3_per_m", w.carried_off_end );
+    f( "point_inflow_m3_per_m", w.point_inflow );
+    f( "runoff_m3_per_m", w.runoff );
+    f( "prescribed_pressure_m3_per_m", w.prescribed );
+    f( "flow_in_m3_per_m", w.flow_in );
+}
+
 //! Calls f(name, field) for every field of a StageSummary.
 template <class Summary, class F>
 void visitStageSummary( Summary& s, F&& f )
@@ -101,6 +117,13 @@ void visitStageSummary( Summary& s, F&& f )
     f( "converged", s.converged );
     f( "stop_reason", s.stop_reason );
     f( "max_speed_m_per_s", s.max_speed_m_per_s );
+    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
+                       { f( "water." + name, value ); } );
+    f( "speed_percentile", s.speed_percentile );
+    f( "static_speed_m_per_s", s.static_speed_m_per_s );
+    f( "speed_at_percentile_m_per_s", s.speed_at_percentile_m_per_s );
+    f( "points_not_below_static_speed", s.points_not_below_static_speed );
+    f( "allowed_points_not_below", s.allowed_points_not_below );
 }
 
 //! Calls f(name, field) for every field of a RunProgress.
@@ -128,6 +151,8 @@ void visitRunSummary( Summary& s, F&& f )
     f( "dt_min_s", s.dt_min_s );
     f( "dt_max_s", s.dt_max_s );
     f( "interrupted", s.interrupted );
+    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
+                       { f( "water." + name, value ); } );
 }
 
 /*!

@@ -2,6 +2,7 @@
 // on a water table under a rainfall of 0.9 K_s (Srivastava & Yeh 1991).
 #include <mpm_gardner_infiltration.hpp>
 #include <mpm_test_backends.hpp>
+#include <mpm_test_water.hpp>
 
 #include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
@@ -67,26 +68,7 @@ std::string column( const int cells, const double duration,
                        rain * K_s, h );
     return std::string( "[case]\nname = \"gardner_column\"\n"
                         "analysis = \"unsaturated\"\n" ) +
-           grid + R"(
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e8
-poisson_ratio = 0.0
-[materials.retention]
-model = "gardner"
-alpha_per_m = 4.0
-residual_saturation = 0.0
-)" + body + R"(
-[[boundaries]]
-where = "left"
-condition = "fix_x"
-[[boundaries]]
-where = "right"
-condition = "fix_x"
+           grid + mpm_test::gardnerSoilOnRollersToml() + body + R"(
 [[boundaries]]
 where = "bottom"
 condition = "fixed"
