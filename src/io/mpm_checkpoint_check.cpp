@@ -50,6 +50,20 @@ std::string checkpointRangeError( const Checkpoint& c,
         return "loop.stage: expected a stage index in 0.." +
                std::to_string( config.stages.size() ) + ", found " +
                std::to_string( c.loop.stage );
+    // The current stage's point conditions index its lists (-1: none).
+    const bool in_stage = c.loop.stage < config.stages.size();
+    const auto count = [&]( const std::size_t size )
+    { return in_stage ? static_cast<long>( size ) : 0L; };
+    const StageConfig* stage =
+        in_stage ? &config.stages[c.loop.stage] : nullptr;
+    const long num_loads = stage ? count( stage->loads.size() ) : 0;
+    for ( std::size_t g = 0; g < c.load_groups.size(); ++g )
+        for ( const int l : c.load_groups[g] )
+            if ( l < 0 || l >= num_loads )
+                return "load_groups[" + std::to_string( g ) +
+                       "]: expected load indices in 0.." +
+                       std::to_string( num_loads - 1 ) + ", found " +
+                       std::to_string( l );
     for ( const CheckpointArray& a : c.arrays )
     {
         std::string error;
@@ -58,10 +72,18 @@ std::string checkpointRangeError( const Checkpoint& c,
                                 static_cast<long>( config.materials.size() ) );
         else if ( a.name == "particles/id_p" )
             error = intOutside( a, 0, n );
+        else if ( a.name == "particles/load_p" )
+            error = intOutside( a, -1, count( c.load_groups.size() ) );
+        else if ( a.name == "water/p_w_condition_p" )
+            error = intOutside(
+                a, -1, stage ? count( stage->pore_pressures.size() ) : 0 );
+        else if ( a.name == "water/inflow_p" )
+            error =
+                intOutside( a, -1, stage ? count( stage->inflows.size() ) : 0 );
         if ( !error.empty() )
             return error;
         if ( !startsWith( a.name, "particles/" ) &&
-             !startsWith( a.name, "water_particles/" ) )
+             !startsWith( a.name, "water/" ) )
             continue;
         const auto it = std::find_if( a.reals.begin(), a.reals.end(),
                                       []( const double v )

@@ -8,7 +8,8 @@
 namespace mpm
 {
 int fixBaseSlivers( const physics::GridGeometry& grid,
-                    const std::vector<double>& x, std::vector<int>& flags,
+                    const std::vector<double>& x,
+                    const std::vector<int>& cut_cells, std::vector<int>& flags,
                     std::vector<int>* water_flags )
 {
     const int nx = grid.nx;
@@ -31,7 +32,7 @@ int fixBaseSlivers( const physics::GridGeometry& grid,
         for ( int ci = 0; ci < nx; ++ci )
             for ( int cj = 0; cj < ny; ++cj )
             {
-                if ( points[ci * ny + cj] > 0 )
+                if ( points[ci * ny + cj] > 0 || !cut_cells[ci * ny + cj] )
                     continue;
                 int water = 0, num_fixed_nodes = 0;
                 for ( int k = 0; k < 4; ++k )

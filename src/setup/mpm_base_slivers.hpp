@@ -18,12 +18,17 @@ namespace mpm
   velocity of 0.9 m/s in 24 ms). Such a node takes the solid flag
   node_fixed and the water flags of the cell's fixed nodes, so the base
   follows the staircase of fixed nodes there (at most a point spacing
-  higher). Repeats until no cell changes. `x` holds the points' positions
-  (x, y per point, m); `water_flags` may be null (dry scenes).
+  higher). Repeats until no cell changes. Only cells the base line cuts
+  (`cut_cells`, cutBaseCells) can hold a sliver: an empty cell beside a
+  fixed grid edge or wall is empty space (fixing it spread fixed nodes
+  through the whole empty grid above a fixed floor, so nothing could run
+  out there). `x` holds the points' positions (x, y per point, m);
+  `water_flags` may be null (dry scenes).
   \return the number of nodes fixed.
 */
 int fixBaseSlivers( const physics::GridGeometry& grid,
-                    const std::vector<double>& x, std::vector<int>& flags,
+                    const std::vector<double>& x,
+                    const std::vector<int>& cut_cells, std::vector<int>& flags,
                     std::vector<int>* water_flags );
 
 /*!

@@ -135,16 +135,16 @@ class Simulation
         // (A restart re-applies the stage before it restores the flags:
         // the slivers it finds then do not matter.)
         const bool complete = solver.base_cell_completion && twoPhase();
+        _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
+                              : std::vector<int>();
         if ( complete )
-            fixBaseSlivers( grid.geometry, activePositions(), flags,
+            fixBaseSlivers( grid.geometry, activePositions(), _cut_cells, flags,
                             &water_flags );
         const std::vector<int> walls =
             nodeFlags( grid_config, interiorWalls( stage.boundaries, true ) );
         for ( std::size_t n = 0; n < flags.size(); ++n )
             flags[n] |= walls[n];
         copyNodeFlags( flags, grid.flags_i );
-        _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
-                              : std::vector<int>();
         flagsRestored();
         if ( twoPhase() )
             copyNodeFlags( water_flags, water_grid.flags_w_i );

@@ -31,14 +31,56 @@ CommandResult runCommand( const std::string& args )
     return mpm_test::runLogged( args, "rainslide_damaged.log" );
 }
 
-//! A run of the test block stopped after 30 steps (checkpoint and probes
-//! in dir/out); returns the case file.
-fs::path stoppedRun( const fs::path& dir )
+/*!
+  A saturated column 0.5 m x 2 m with p_w held on its top points and rain
+  on a polyline along its top, one dynamic stage: its checkpoint has point
+  conditions (water/p_w_condition_p, water/inflow_p).
+*/
+const char* const two_phase_text = R"(
+[case]
+name = "wet_column"
+analysis = "saturated"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.5
+cells = [1, 5]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 2650.0
+porosity = 0.3
+permeability_m2 = 1.0e-12
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.3
+[[bodies]]
+material = "soil"
+polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
+[[boundaries]]
+where = "bottom"
+condition = "fixed"
+[[stages]]
+name = "rain"
+type = "dynamic"
+duration_s = 0.2
+[[stages.pore_pressures]]
+where = "box"
+box_m = [[0.0, 1.75], [0.5, 2.0]]
+pressure_pa = 0.0
+[[stages.inflows]]
+where = "polyline"
+polyline_m = [[0.0, 2.0], [0.5, 2.0]]
+flux_m_per_s = 1.0e-4
+)";
+
+//! A run of `text` (default: the test block) stopped after 30 steps
+//! (checkpoint and probes in dir/out); returns the case file.
+fs::path
+stoppedRun( const fs::path& dir,
+            const std::string& text = mpm_test::probedBlockCaseText( "0.2" ) )
 {
     fs::remove_all( dir );
     fs::create_directories( dir );
-    const fs::path file =
-        mpm_test::writeCase( dir, mpm_test::probedBlockCaseText( "0.2" ) );
+    const fs::path file = mpm_test::writeCase( dir, text );
     const auto stopped = runCommand( "run " + file.string() + " --out " +
                                      ( dir / "out" ).string() +
                                      " --backend serial --quiet "
@@ -48,14 +90,16 @@ fs::path stoppedRun( const fs::path& dir )
 }
 
 //! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
-void expectDamageRefused( const std::string& name,
-                          const std::function<void( mpm::Checkpoint& )>& damage,
-                          const std::string& fragment )
+void expectDamageRefused(
+    const std::string& name,
+    const std::function<void( mpm::Checkpoint& )>& damage,
+    const std::string& fragment,
+    const std::string& text = mpm_test::probedBlockCaseText( "0.2" ) )
 {
     SCOPED_TRACE( name );
     const fs::path dir =
         fs::path( ::testing::TempDir() ) / ( "rainslide_damaged_" + name );
-    const fs::path file = stoppedRun( dir );
+    const fs::path file = stoppedRun( dir, text );
     const std::string checkpoint = ( dir / "out" / "checkpoint.h5" ).string();
     mpm::Checkpoint c = mpm::readCheckpoint( checkpoint );
     damage( c );
@@ -104,6 +148,47 @@ TEST( RestartDamaged, out_of_range_values_are_refused )
         "snapshot_count: expected >= 0, found -3" );
 }
 
+//---------------------------------------------------------------------------//
+// The point conditions index the stage's lists (one pore-pressure
+// condition, one inflow, no load): out of range they read out of bounds.
+// The water fields are checked for finite values like the solid's (they
+// were skipped: their group is "water/", not "water_particles/").
+TEST( RestartDamaged, out_of_range_point_conditions_are_refused )
+{
+    expectDamageRefused(
+        "condition",
+        []( mpm::Checkpoint& c )
+        { array( c, "water/p_w_condition_p" ).integers[2] = 1; },
+        "water/p_w_condition_p[2]: expected an index in -1..0, found 1",
+        two_phase_text );
+    expectDamageRefused(
+        "inflow",
+        []( mpm::Checkpoint& c )
+        { array( c, "water/inflow_p" ).integers[0] = -2; },
+        "water/inflow_p[0]: expected an index in -1..0, found -2",
+        two_phase_text );
+    expectDamageRefused(
+        "load",
+        []( mpm::Checkpoint& c )
+        { array( c, "particles/load_p" ).integers[1] = 0; },
+        "particles/load_p[1]: expected an index in -1..-1, found 0",
+        two_phase_text );
+    expectDamageRefused(
+        "load_group",
+        []( mpm::Checkpoint& c ) { c.load_groups.push_back( { 3 } ); },
+        "load_groups[0]: expected load indices in 0..-1, found 3",
+        two_phase_text );
+    expectDamageRefused(
+        "water_pressure",
+        []( mpm::Checkpoint& c )
+        {
+            array( c, "water/p_w_p" ).reals[4] =
+                std::numeric_limits<double>::infinity();
+        },
+        "water/p_w_p[4]: expected a finite number", two_phase_text );
+}
+
+//---------------------------------------------------------------------------//
 TEST( RestartDamaged, flipped_byte_in_a_dataset_is_refused )
 {
     const fs::path dir =

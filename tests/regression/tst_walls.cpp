@@ -183,39 +183,49 @@ TYPED_TEST( Walls, gate_opens_between_stages )
 }
 
 //---------------------------------------------------------------------------//
-// In a two-phase scene the empty cells beside a wall are no soil sliver
-// (fixBaseSlivers): the nodes held are the wall's (x = 1 m, 13 nodes) and
-// the corner the left edge and the floor fix, not the empty part of the
-// grid.
+// In a two-phase scene the empty cells beside a wall or above a fixed
+// floor are no soil sliver (fixBaseSlivers): the nodes held are the
+// wall's (x = 1 m, 13 nodes) and the floor's (41, one shared), not the
+// empty part of the grid. With a roller floor, the wall's and the corner
+// the left edge and the floor fix. (Before, the fixed floor seeded
+// "slivers" in every empty cell: 353 more nodes fixed, so a two-phase
+// block could not run out.)
 TYPED_TEST( Walls, two_phase_wall_fixes_no_empty_cell )
 {
-    mpm::CaseConfig config = gateCase();
-    config.analysis = mpm::AnalysisType::Saturated;
-    mpm::MaterialConfig sand =
-        mpm_test::saturatedMaterial( 5.0e6, 0.3, 2650.0, 0.3, 1.0e-10 );
-    sand.name = "sand";
-    config.materials = { sand };
-    // A roller floor (a fixed one seeds the slivers itself).
-    for ( auto* list : { &config.boundaries, &config.stages[0].boundaries } )
-        ( *list )[1].condition = mpm::BoundaryCondition::FixY;
-    for ( auto& stage : config.stages )
-        stage.materials = config.materials;
-    config.stages.resize( 1 );
-    ASSERT_TRUE( config.solver.base_cell_completion );
-    mpm::Simulation<TypeParam> sim( config );
-    const auto flags = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
-                                                            sim.grid.flags_i );
-    int fully_fixed = 0, fixed_off_the_wall = 0;
-    for ( int i = 0; i <= config.grid.cells[0]; ++i )
-        for ( int j = 0; j <= config.grid.cells[1]; ++j )
-            if ( mpm::fullyFixed( flags( i, j ) ) )
-            {
-                ++fully_fixed;
-                // The corner (0, 0) is fix_x (left) and fix_y (floor).
-                fixed_off_the_wall += i != 20 && !( i == 0 && j == 0 );
-            }
-    EXPECT_EQ( fully_fixed, 14 );
-    EXPECT_EQ( fixed_off_the_wall, 0 );
+    for ( const auto floor :
+          { mpm::BoundaryCondition::Fixed, mpm::BoundaryCondition::FixY } )
+    {
+        mpm::CaseConfig config = gateCase();
+        config.analysis = mpm::AnalysisType::Saturated;
+        mpm::MaterialConfig sand =
+            mpm_test::saturatedMaterial( 5.0e6, 0.3, 2650.0, 0.3, 1.0e-10 );
+        sand.name = "sand";
+        config.materials = { sand };
+        for ( auto* list :
+              { &config.boundaries, &config.stages[0].boundaries } )
+            ( *list )[1].condition = floor;
+        for ( auto& stage : config.stages )
+            stage.materials = config.materials;
+        config.stages.resize( 1 );
+        ASSERT_TRUE( config.solver.base_cell_completion );
+        mpm::Simulation<TypeParam> sim( config );
+        const auto flags = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), sim.grid.flags_i );
+        const bool fixed_floor = floor == mpm::BoundaryCondition::Fixed;
+        int fully_fixed = 0, fixed_elsewhere = 0;
+        for ( int i = 0; i <= config.grid.cells[0]; ++i )
+            for ( int j = 0; j <= config.grid.cells[1]; ++j )
+                if ( mpm::fullyFixed( flags( i, j ) ) )
+                {
+                    ++fully_fixed;
+                    // A roller floor: the corner (0, 0) is fix_x (left)
+                    // and fix_y (floor).
+                    const bool floor_node = j == 0 && ( fixed_floor || i == 0 );
+                    fixed_elsewhere += i != 20 && !floor_node;
+                }
+        EXPECT_EQ( fully_fixed, fixed_floor ? 13 + 41 - 1 : 14 );
+        EXPECT_EQ( fixed_elsewhere, 0 );
+    }
 }
 
 //---------------------------------------------------------------------------//
