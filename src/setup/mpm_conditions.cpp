@@ -3,7 +3,7 @@
 #include <setup/mpm_particle_generator.hpp>
 #include <setup/mpm_polyline_cells.hpp>
 
-#include <mpm_device_type.hpp>
+#include <mpm_status_flags.hpp>
 
 #include <cmath>
 #include <set>

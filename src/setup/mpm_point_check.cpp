@@ -2,7 +2,7 @@
 #include <setup/mpm_particle_generator.hpp>
 #include <setup/mpm_point_check.hpp>
 
-#include <mpm_device_type.hpp>
+#include <mpm_status_flags.hpp>
 
 #include <algorithm>
 #include <cmath>

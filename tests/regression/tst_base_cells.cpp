@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -234,18 +235,21 @@ double joukowsky( const double seepage_momentum )
   reaches the base (the lowest point's p_w first >= 0); the largest p_w
   over the stage, and over its hydrostatic value plus Joukowsky's pressure
   of the largest seepage momentum rho_w n S |v_w - v_s| of a point in the
-  last 0.25 s (hammer_ratio); the peak ratio from 1 s before the settled
-  checks, which run from 2 s after the arrival (and not before
-  `settled_from_s`) to the end.
+  last 0.25 s (hammer_ratio); the time the layer has filled (filled_s: no
+  point below -2 % of rho_w g 5 m, an unsaturated pocket); the peak ratio
+  from 1 s before the settled checks, which run from `settle_s` after the
+  arrival and 0.5 s after the filling (and not before `settled_from_s`) to
+  the end.
 */
 template <class ExecSpace>
 class WettingHistory : public mpm::RunObserver
 {
   public:
     WettingHistory( const mpm::Simulation<ExecSpace>& sim,
-                    const double settled_from_s )
+                    const double settled_from_s, const double settle_s )
         : _sim( sim )
         , _settled_from( settled_from_s )
+        , _settle( settle_s )
     {
     }
     void onStep( const mpm::RunProgress& progress ) override
@@ -256,7 +260,8 @@ class WettingHistory : public mpm::RunObserver
         const auto snap = mpm::hostSnapshot( _sim );
         const HydrostaticCheck check =
             checkHydrostatic( snap, heldLevel( snap ) );
-        double lowest_y = 1e9, lowest_p = 0.0, momentum = 0.0, p_max = 0.0;
+        double lowest_y = 1e9, lowest_p = 0.0, momentum = 0.0, p_max = 0.0,
+               p_min = 0.0;
         for ( int p = 0; p < snap.num_points; ++p )
         {
             if ( snap.x[2 * p + 1] < lowest_y )
@@ -265,6 +270,7 @@ class WettingHistory : public mpm::RunObserver
                 lowest_p = snap.p_w[p];
             }
             p_max = std::max( p_max, snap.p_w[p] );
+            p_min = std::min( p_min, snap.p_w[p] );
             momentum = std::max(
                 momentum,
                 1000.0 * snap.n[p] * snap.S[p] *
@@ -284,7 +290,12 @@ class WettingHistory : public mpm::RunObserver
             arrival_s = progress.stage_time_s;
         if ( arrival_s < 0.0 )
             return;
-        const double settled_from = std::max( arrival_s + 2.0, _settled_from );
+        if ( filled_s < 0.0 && p_min >= -0.02 * 1000.0 * 9.81 * 5.0 )
+            filled_s = progress.stage_time_s;
+        const double settled_from =
+            filled_s < 0.0 ? 1.0e300
+                           : std::max( { arrival_s + _settle, filled_s + 0.5,
+                                         _settled_from } );
         if ( progress.stage_time_s >= settled_from - 1.0 )
             late_peak_ratio = std::max( late_peak_ratio, check.peak_ratio );
         if ( progress.stage_time_s < settled_from )
@@ -297,6 +308,7 @@ class WettingHistory : public mpm::RunObserver
             std::max( settled.cell_mean_error, check.cell_mean_error );
     }
     double arrival_s = -1.0;
+    double filled_s = -1.0;
     double peak_pa = 0.0;
     double hammer_ratio = 0.0;
     double late_peak_ratio = 0.0;
@@ -306,6 +318,7 @@ class WettingHistory : public mpm::RunObserver
   private:
     const mpm::Simulation<ExecSpace>& _sim;
     double _settled_from;
+    double _settle;
     double _next = 0.0;
     double _momenta[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
 };
@@ -342,19 +355,23 @@ TYPED_TEST( BaseCells, column_on_a_cut_base_is_hydrostatic )
 
 //! Runs a wetting case with a WettingHistory and prints it.
 template <class ExecSpace>
-WettingHistory<ExecSpace> wettingHistory( const std::string& text,
-                                          const char* label,
-                                          const double settled_from_s = 0.0 )
+WettingHistory<ExecSpace>
+wettingHistory( const std::string& text, const char* label,
+                const double settled_from_s = 0.0, const double settle_s = 2.0 )
 {
-    const auto config = mpm::parseCase( text, "case" );
+    auto config = mpm::parseCase( text, "case" );
+    // RAINSLIDE_WETTING_COURANT_FACTOR perturbs the step (how robust the
+    // checks are to the chaotic filling; see the staircase test).
+    if ( const char* f = std::getenv( "RAINSLIDE_WETTING_COURANT_FACTOR" ) )
+        config.solver.courant_number *= std::atof( f );
     mpm::Simulation<ExecSpace> sim( config );
-    WettingHistory<ExecSpace> history( sim, settled_from_s );
+    WettingHistory<ExecSpace> history( sim, settled_from_s, settle_s );
     mpm::runStages( sim, config, history );
-    std::printf( "%s: front at the base %.2f s; peak p_w %.0f Pa, %.3f x "
-                 "(hydrostatic + Joukowsky); %.3f x hydrostatic 1 s before "
-                 "settled; settled (%d checks): points within %.4f, cell "
-                 "means %.4f, intra-cell %.4f\n",
-                 label, history.arrival_s, history.peak_pa,
+    std::printf( "%s: front at the base %.2f s, filled %.2f s; peak p_w %.0f "
+                 "Pa, %.3f x (hydrostatic + Joukowsky); %.3f x hydrostatic 1 "
+                 "s before settled; settled (%d checks): points within %.4f, "
+                 "cell means %.4f, intra-cell %.4f\n",
+                 label, history.arrival_s, history.filled_s, history.peak_pa,
                  history.hammer_ratio, history.late_peak_ratio,
                  history.settled_checks, history.settled.point_error,
                  history.settled.cell_mean_error, history.settled.intra_cell );
@@ -375,6 +392,7 @@ void expectSettles( const WettingHistory<ExecSpace>& history,
                     const double late_peak_bound )
 {
     ASSERT_GT( history.arrival_s, 0.0 );
+    ASSERT_GT( history.filled_s, 0.0 ) << "an unsaturated pocket remained";
     EXPECT_GT( history.settled_checks, settled_checks );
     EXPECT_LT( history.hammer_ratio, 1.2 );
     if ( late_peak_bound > 0.0 )
@@ -460,23 +478,26 @@ std::string wettingOntoStaircase()
 }
 
 // Wetted onto the 10-degree staircase (2-D, a base that is not
-// grid-aligned): the front fills the base at 13.15 s, p_w peaks at 193 kPa
-// (0.60 x hydrostatic plus Joukowsky); from 2 s later every point within
-// 0.51 % of rho_w g 5 m of one hydrostatic line, 0.3 % inside cells, cell
-// means within 0.3 % (2.8 % with the empty parts at their cell's mean).
-// Point-wise (226a27a) the front's arrival left p_w up to 3.2 x
-// hydrostatic and points of one cell 74 % apart (RMS, relative to
-// hydrostatic). The filling of the last pockets above the staircase is
-// chaotic: Courant numbers 1e-6 and 1e-5 apart gave arrivals from 12.6 to
-// 13.5 s, peaks of 97 to 193 kPa and single-snapshot pulses 1 s before the
-// settled checks of 1.03 to 1.53 x hydrostatic, all within the Joukowsky
-// bound (0.51-0.89); so that time's peak is not asserted here (the 1-D
-// column's, 1.030 under the same perturbations, is).
+// grid-aligned): the front fills the base at 14.15 s, the last pocket at
+// 16.9 s, p_w peaks at 87 kPa (0.50 x hydrostatic plus Joukowsky); from
+// 0.5 s after the filling every point within 0.50 % of rho_w g 5 m of one
+// hydrostatic line, 0.3 % inside cells, cell means within 0.3 % (2.8 % with
+// the empty parts at their cell's mean). Point-wise (226a27a) the front's
+// arrival left p_w up to 3.2 x hydrostatic and points of one cell 74 %
+// apart (RMS, relative to hydrostatic). The filling of the last pockets
+// above the staircase is chaotic: Courant numbers 1e-6 to 1e-4 apart, or
+// Eq. 8 solved to 1e-9 Pa instead of exactly, gave arrivals from 12.6 to
+// 14.15 s, the last pocket filled up to 18.2 s (RAINSLIDE_WETTING_COURANT_
+// FACTOR = 0.99999), peaks of 87 to 208 kPa and single-snapshot pulses 1 s
+// before the settled checks of 1.03 to 1.98 x hydrostatic, all within the
+// Joukowsky bound (0.50-1.15); so that time's peak is not asserted here
+// (the 1-D column's, 1.03 under the same perturbations, is), and the
+// settled checks start once the layer has filled.
 TYPED_TEST( BaseCells, layer_wetted_onto_a_staircase_settles_hydrostatic )
 {
     const auto history = wettingHistory<TypeParam>( wettingOntoStaircase(),
                                                     "staircase wetting", 17.0 );
-    expectSettles( history, 0.016, 40, 0.0 );
+    expectSettles( history, 0.016, 20, 0.0 );
     EXPECT_LT( history.settled.cell_mean_error, 0.01 );
 }
 
