@@ -109,6 +109,40 @@ points = [ { name = "top", position_m = [1.0, 1.9] } ]
 )" );
 }
 
+/*!
+  \brief A saturated elastic column 0.5 m x 2 m on a fixed base (cells of
+  0.5 m, grid up to 2.5 m, 16 points) named `name`, followed by the
+  [[stages]] tables of `stages`.
+*/
+inline std::string saturatedColumnCaseText( const std::string& name,
+                                            const std::string& stages )
+{
+    return R"(
+[case]
+name = ")" +
+           name + R"("
+analysis = "saturated"
+[grid]
+origin_m = [0.0, 0.0]
+cell_size_m = 0.5
+cells = [1, 5]
+[[materials]]
+name = "soil"
+model = "linear_elastic"
+solid_density_kg_per_m3 = 2650.0
+porosity = 0.3
+permeability_m2 = 1.0e-12
+youngs_modulus_pa = 1.0e7
+poisson_ratio = 0.3
+[[bodies]]
+material = "soil"
+polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
+[[boundaries]]
+where = "bottom"
+condition = "fixed"
+)" + stages;
+}
+
 } // namespace mpm_test
 
 #endif // MPM_TEST_CLI_HPP

@@ -50,28 +50,8 @@ std::string positionOf( const fs::path& file, const std::string& text,
   (selects nothing), the second rains on a polyline above the soil
   (nothing) and on one along the soil's top that starts left of the grid.
 */
-const char* const two_phase_text = R"(
-[case]
-name = "warned_column"
-analysis = "saturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [1, 5]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2650.0
-porosity = 0.3
-permeability_m2 = 1.0e-12
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
+const std::string two_phase_text =
+    mpm_test::saturatedColumnCaseText( "warned_column", R"(
 [[stages]]
 name = "settle"
 type = "dynamic"
@@ -92,7 +72,7 @@ flux_m_per_s = 1.0e-4
 where = "polyline"
 polyline_m = [[-0.5, 2.0], [0.5, 2.0]]
 flux_m_per_s = 1.0e-4
-)";
+)" );
 
 //---------------------------------------------------------------------------//
 TEST( CliWarnings, empty_selections_and_outside_points_warn_at_check_and_run )

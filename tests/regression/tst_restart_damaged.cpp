@@ -36,28 +36,8 @@ CommandResult runCommand( const std::string& args )
   on a polyline along its top, one dynamic stage: its checkpoint has point
   conditions (water/p_w_condition_p, water/inflow_p).
 */
-const char* const two_phase_text = R"(
-[case]
-name = "wet_column"
-analysis = "saturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [1, 5]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2650.0
-porosity = 0.3
-permeability_m2 = 1.0e-12
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
+const std::string two_phase_text =
+    mpm_test::saturatedColumnCaseText( "wet_column", R"(
 [[stages]]
 name = "rain"
 type = "dynamic"
@@ -70,7 +50,7 @@ pressure_pa = 0.0
 where = "polyline"
 polyline_m = [[0.0, 2.0], [0.5, 2.0]]
 flux_m_per_s = 1.0e-4
-)";
+)" );
 
 //! A run of `text` (default: the test block) stopped after 30 steps
 //! (checkpoint and probes in dir/out); returns the case file.
