@@ -256,6 +256,12 @@ class Scanner
             break;
         case '=':
             _dots = 0;
+            // An '=' after a value's text is part of that (invalid) value
+            // for toml++, which reads a quote after it outside any string
+            // and reaches __builtin_unreachable on a non-ASCII character
+            // there: "x = -805='''...'''" (fuzzer, session 11).
+            if ( !_key )
+                _prev = '0';
             _key = false;
             break;
         case ',':
