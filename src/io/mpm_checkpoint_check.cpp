@@ -50,13 +50,17 @@ std::string checkpointRangeError( const Checkpoint& c,
         return "loop.stage: expected a stage index in 0.." +
                std::to_string( config.stages.size() ) + ", found " +
                std::to_string( c.loop.stage );
-    // The current stage's point conditions index its lists (-1: none).
-    const bool in_stage = c.loop.stage < config.stages.size();
-    const auto count = [&]( const std::size_t size )
-    { return in_stage ? static_cast<long>( size ) : 0L; };
-    const StageConfig* stage =
-        in_stage ? &config.stages[c.loop.stage] : nullptr;
-    const long num_loads = stage ? count( stage->loads.size() ) : 0;
+    // The current stage's point conditions index its lists (-1: none; no
+    // list once every stage has ended).
+    const StageConfig* stage = c.loop.stage < config.stages.size()
+                                   ? &config.stages[c.loop.stage]
+                                   : nullptr;
+    const auto length = []( const auto& list )
+    { return static_cast<long>( list.size() ); };
+    const long num_loads = stage ? length( stage->loads ) : 0;
+    const long num_groups = stage ? length( c.load_groups ) : 0;
+    const long num_conditions = stage ? length( stage->pore_pressures ) : 0;
+    const long num_inflows = stage ? length( stage->inflows ) : 0;
     for ( std::size_t g = 0; g < c.load_groups.size(); ++g )
         for ( const int l : c.load_groups[g] )
             if ( l < 0 || l >= num_loads )
@@ -73,13 +77,11 @@ std::string checkpointRangeError( const Checkpoint& c,
         else if ( a.name == "particles/id_p" )
             error = intOutside( a, 0, n );
         else if ( a.name == "particles/load_p" )
-            error = intOutside( a, -1, count( c.load_groups.size() ) );
+            error = intOutside( a, -1, num_groups );
         else if ( a.name == "water/p_w_condition_p" )
-            error = intOutside(
-                a, -1, stage ? count( stage->pore_pressures.size() ) : 0 );
+            error = intOutside( a, -1, num_conditions );
         else if ( a.name == "water/inflow_p" )
-            error =
-                intOutside( a, -1, stage ? count( stage->inflows.size() ) : 0 );
+            error = intOutside( a, -1, num_inflows );
         if ( !error.empty() )
             return error;
         if ( !startsWith( a.name, "particles/" ) &&
