@@ -1,7 +1,7 @@
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_toml_prescan.hpp>
+#include <io/mpm_toml_text.hpp>
 
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -213,8 +213,13 @@ class Scanner
             break;
         case 'T':
         case 't':
-            if ( !_key && !timeAfterDate() )
-                return false;
+        case ' ':
+            if ( !_key )
+            {
+                const std::string problem = timeAfterDateProblem( _text, _pos );
+                if ( !problem.empty() )
+                    return fail( problem, 1 );
+            }
             break;
         case '[':
             if ( _open.empty() && _line_blank )
@@ -336,33 +341,6 @@ class Scanner
     }
 
     /*!
-      At a 'T' or 't' in a value: after a date YYYY-MM-DD, the time must
-      start with a digit. toml++ 3.3 takes "1978-05-27T:" for a date-time
-      and calls its time parser on the ':', whose precondition it breaks
-      (an assertion in debug builds, undefined behaviour in release ones).
-    */
-    bool timeAfterDate()
-    {
-        if ( _pos < 10 || _pos + 1 >= _text.size() )
-            return true;
-        const std::string_view date = _text.substr( _pos - 10, 10 );
-        for ( std::size_t k = 0; k < date.size(); ++k )
-        {
-            const bool digit = date[k] >= '0' && date[k] <= '9';
-            if ( ( k == 4 || k == 7 ) ? date[k] != '-' : !digit )
-                return true;
-        }
-        const char next = _text[_pos + 1];
-        if ( next >= '0' && next <= '9' )
-            return true;
-        return fail( "invalid TOML: expected a time HH:MM:SS after the date "
-                     "and '" +
-                         std::string( 1, _text[_pos] ) + "', found " +
-                         describe( next ),
-                     1 );
-    }
-
-    /*!
       At the '[' of a table header ('[' or '[[' first on a line, outside
       any value): the name must start with a bare key character or a quote
       (or be ']' or the end: toml++ reports those). toml++ 3.3 calls its
@@ -393,23 +371,8 @@ class Scanner
             return true;
         return fail( "invalid TOML: expected a table name (a bare or quoted "
                      "key) after '[', found " +
-                         describe( c ),
+                         describeCharacter( c ),
                      static_cast<int>( at - _pos ) );
-    }
-
-    //! A character for messages: 'c', or its name or code.
-    static std::string describe( const char c )
-    {
-        if ( c == '\n' || c == '\r' )
-            return "the end of the line";
-        const auto u = static_cast<unsigned char>( c );
-        if ( u < 0x20 || u >= 0x7f )
-        {
-            char code[8];
-            std::snprintf( code, sizeof code, "0x%02X", u );
-            return std::string( "the byte " ) + code;
-        }
-        return "'" + std::string( 1, c ) + "'";
     }
 
     std::string_view _text;
