@@ -407,11 +407,11 @@ CellEquilibriumLimit cellWaterEquilibrium(
             for ( int a = offset_c( c ); a < offset_c( c + 1 ); ++a )
             {
                 const int p = points_c( a );
-                const double wave = waveSpeedTwoPhase(
+                const double wave = physics::waveSpeedTwoPhase(
                     materials[material_p( p )], water, m_p( p ), vol_p( p ),
                     n_p( p ), S_p( p ) );
-                const double dt = pointTimeStep( cell_size, wave, v_s_p( p, 0 ),
-                                                 v_s_p( p, 1 ) );
+                const double dt = physics::pointTimeStep(
+                    cell_size, wave, v_s_p( p, 0 ), v_s_p( p, 1 ) );
                 dt_min = dt < dt_min ? dt : dt_min;
                 c_max = wave > c_max ? wave : c_max;
                 ++listed;

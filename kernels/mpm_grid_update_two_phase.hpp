@@ -7,6 +7,7 @@
 #include <mpm_p2g_two_phase.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_nodal_update.hpp>
+#include <physics/mpm_nodal_water.hpp>
 #include <physics/mpm_two_phase.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -25,7 +26,7 @@ namespace mpm
   an inflow on a grid edge) is tied with that flux's seepage
   (physics::tiedSeepage). The water force (per unit water volume) is scaled
   by the nodal n S = m_w / (rho_w vol); the drag comes from the nodal mean
-  permeability (physics::nodalDrag). Nodes of base cells get the forces
+  permeability (physics::nodalWater). Nodes of base cells get the forces
   that complete those cells (BaseCellAccess::addNodeForces).
 */
 template <class ExecSpace, class Duplication>
@@ -99,22 +100,18 @@ void gridUpdateTwoPhase(
 
             const int flags = flags_i( i, j );
             const int flags_w = flags_w_i( i, j );
-            // Nodal water volume fraction n S.
-            const double nS = m_w / ( water_density * vol );
-            // Zero permeability (k_rel = 0) locks the water to the solid.
-            const bool locked = !( q > 0.0 );
-            const double drag =
-                locked ? 0.0
-                       : physics::nodalDrag( nS, water_viscosity, vol, q );
+            const physics::NodalWater water = physics::nodalWater(
+                m_w, vol, q, water_density, water_viscosity );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
                 const double flux = flux_i( i, j, d );
-                const auto r = update(
-                    m_s, m_w, mv_s[d], mv_w[d], f_m[d], nS * f_w[d], drag,
-                    flags & bit, locked || ( flags_w & bit ) || flux != 0.0,
-                    physics::tiedSeepage( flux, m_w, m_s, vol,
-                                          water_density ) );
+                const auto r =
+                    update( m_s, m_w, mv_s[d], mv_w[d], f_m[d],
+                            water.nS * f_w[d], water.drag, flags & bit,
+                            water.locked || ( flags_w & bit ) || flux != 0.0,
+                            physics::tiedSeepage( flux, m_w, m_s, vol,
+                                                  water_density ) );
                 v_s_i( i, j, d ) = r.v_s;
                 dv_s_i( i, j, d ) = r.dv_s;
                 v_w_i( i, j, d ) = r.v_w;
@@ -169,20 +166,15 @@ void remapVelocityTwoPhase(
             double v_s[2] = { mv_s_i( i, j, 0 ) / m_s_i( i, j ),
                               mv_s_i( i, j, 1 ) / m_s_i( i, j ) };
             physics::applyVelocityBC( flags_i( i, j ), v_s[0], v_s[1] );
-            const double m_s = m_s_i( i, j ), m_w = m_w_i( i, j );
-            const bool has_water = m_w > 1.0e-12 * m_s;
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
                 const double flux = flux_i( i, j, d );
-                const bool tied = ( flags_w_i( i, j ) & bit ) || flux != 0.0;
                 v_s_i( i, j, d ) = v_s[d];
-                v_w_i( i, j, d ) =
-                    !has_water ? v_s[d]
-                    : tied     ? v_s[d] + physics::tiedSeepage( flux, m_w, m_s,
-                                                                vol_i( i, j ),
-                                                                water_density )
-                               : mv_w_i( i, j, d ) / m_w;
+                v_w_i( i, j, d ) = physics::remappedWaterVelocity(
+                    v_s[d], mv_w_i( i, j, d ), m_w_i( i, j ), m_s_i( i, j ),
+                    ( flags_w_i( i, j ) & bit ) || flux != 0.0, flux,
+                    vol_i( i, j ), water_density );
             }
         } );
 }

@@ -111,8 +111,8 @@ updatePoints( const char* label, const ExecSpace& exec_space,
                 }
                 // Diagnostics of the new state.
                 const double c = wave_speed( q, *params[l] );
-                const double dt =
-                    pointTimeStep( cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
+                const double dt = physics::pointTimeStep(
+                    cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
                 dt_min = dt < dt_min ? dt : dt_min;
                 c_max = c > c_max ? c : c_max;
                 energy +=
@@ -214,8 +214,8 @@ struct StepVelocityGradient
             if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
             {
                 if ( two_phase )
-                    water_rate =
-                        waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L );
+                    water_rate = physics::waterVolumeRate( n_p( p ), S_p( p ),
+                                                           div_v_w, L );
                 return;
             }
             cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
@@ -225,8 +225,9 @@ struct StepVelocityGradient
             {
                 div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
                 div_v_w_p( p ) = div_v_w;
-                water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
-                             base.extraRate( ci, cj );
+                water_rate =
+                    physics::waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
+                    base.extraRate( ci, cj );
             }
             return;
         }
@@ -243,8 +244,9 @@ struct StepVelocityGradient
                                          m_w_i, vol_i, water_density,
                                          n_p( p ) * S_p( p ), L );
             div_v_w_p( p ) = div_v_w;
-            water_rate = waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
-                         base.extraRate( ci, cj );
+            water_rate =
+                physics::waterVolumeRate( n_p( p ), S_p( p ), div_v_w, L ) +
+                base.extraRate( ci, cj );
         }
     }
 };
@@ -296,7 +298,7 @@ PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
     const auto wave_speed =
         KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
     {
-        return waveSpeedDry( params, m_p( p ), vol_p( p ) );
+        return physics::waveSpeedDry( params, m_p( p ), vol_p( p ) );
     };
     return updatePoints<1>( "mpm::update_points_dry", exec_space, pv, no_water,
                             materials, gv.geometry, remove_outside,
@@ -359,8 +361,8 @@ PointUpdateReport updatePointsTwoPhase(
     const auto wave_speed =
         KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
     {
-        return waveSpeedTwoPhase( params, water, m_p( p ), vol_p( p ), n_p( p ),
-                                  S_p( p ) );
+        return physics::waveSpeedTwoPhase( params, water, m_p( p ), vol_p( p ),
+                                           n_p( p ), S_p( p ) );
     };
     return updatePoints<PorePressureUpdate::lanes>(
         "mpm::update_points_two_phase", exec_space, pv, wv, materials,

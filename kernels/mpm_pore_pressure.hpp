@@ -36,7 +36,7 @@ struct RetentionAt
 //---------------------------------------------------------------------------//
 /*!
   \brief Pore pressure, porosity and retention state of points
-  (formulation.md steps 6, 7, 9) from their velocity gradient L and water
+  (docs/formulation.md steps 6, 7, 9) from their velocity gradient L and water
   volume rate r = n S div v_w + (1 - n) S div v_s (waterVolumeRate): p_w from
   the mass-conservative Eq. 8 (explicit when saturated), prescribed point
   pressures, porosity from Eq. 2 as n' = 1 - (1 - n) / det(I + L dt), then S,
@@ -78,8 +78,9 @@ struct PorePressurePointUpdate
     KOKKOS_INLINE_FUNCTION double inflowSource( const int q,
                                                 const int inflow ) const
     {
-        return inflow >= 0 ? inflow_rate( inflow ) * inflow_weight_p( q ) *
-                                 vol0_p( q ) / vol_p( q )
+        return inflow >= 0 ? physics::inflowSource( inflow_rate( inflow ),
+                                                    inflow_weight_p( q ),
+                                                    vol0_p( q ), vol_p( q ) )
                            : 0.0;
     }
 
@@ -123,23 +124,20 @@ struct PorePressurePointUpdate
             const physics::PorePressureNewton& point = newton[l];
             const int inflow = inflow_p( q );
             const int condition = condition_p( q );
-            double p_w = point.p_w;
-            if ( saturated )
-                p_w += point.volume_change * water.bulk_modulus / point.n;
-            else if ( condition < 0 )
-                p_w += point.dp;
-            const double p_w_free = p_w;
-            const bool capped =
-                inflow >= 0 && inflow_ponding( inflow ) && p_w > 0.0;
-            if ( capped )
-                p_w = 0.0;
-            if ( condition >= 0 )
-                p_w = prescribed_hold( condition )
-                          ? p_w_held_p( q )
-                          : prescribed_p_w( condition );
+            const bool prescribed = condition >= 0;
+            const physics::PointPressure after =
+                physics::pointPressureAfterStep(
+                    point.p_w, point.dp, point.volume_change, point.n,
+                    water.bulk_modulus, saturated,
+                    inflow >= 0 && inflow_ponding( inflow ), prescribed,
+                    !prescribed ? 0.0
+                    : prescribed_hold( condition )
+                        ? p_w_held_p( q )
+                        : prescribed_p_w( condition ) );
+            const double p_w = after.p_w;
             p_w_p( q ) = p_w;
-            // Eq. 2 integrated over the step: (1 - n) V is constant.
-            n_p( q ) = 1.0 - ( 1.0 - point.n ) / kinematics.volumeRatio( L[l] );
+            n_p( q ) = physics::porosityAfterStep(
+                point.n, kinematics.volumeRatio( L[l] ) );
             // The stored state is current at an unchanged p_w (held points).
             if ( !saturated && !( retention_current && p_w == point.p_w ) )
             {
@@ -152,8 +150,8 @@ struct PorePressurePointUpdate
             physics::addPointStepWater(
                 volumes, vol_p( q ), kinematics.dt, source[l],
                 water_rate[l] - point.S * div_v_s, point.volume_change,
-                point.storage, capped, p_w_free, condition >= 0, point.n,
-                point.S, S_p( q ), point.p_w, p_w );
+                point.storage, after.capped, after.p_w_free, prescribed,
+                point.n, point.S, S_p( q ), point.p_w, p_w );
         }
     }
 };

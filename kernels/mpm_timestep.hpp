@@ -4,7 +4,7 @@
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_material_params.hpp>
-#include <physics/mpm_two_phase.hpp>
+#include <physics/mpm_wave_speeds.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
@@ -17,39 +17,6 @@ struct WaveSpeedLimit
     double dt_limit;       //!< min over points of h / (c_p + |v_p|), s
     double max_wave_speed; //!< max over points of c_p, m/s
 };
-
-//---------------------------------------------------------------------------//
-//! P-wave speed sqrt(E_c / rho) of a dry point of mass m and volume vol,
-//! m/s.
-KOKKOS_INLINE_FUNCTION double waveSpeedDry( const physics::MaterialParams& m,
-                                            const double mass,
-                                            const double vol )
-{
-    const double rho = mass / vol;
-    return Kokkos::Experimental::sqrt( m.constrainedModulus() / rho );
-}
-
-//! Fastest wave of a two-phase point (physics::twoPhaseWaveSpeed with the
-//! saturated fluid stiffness, see criticalTimeStepTwoPhase), m/s.
-KOKKOS_INLINE_FUNCTION double
-waveSpeedTwoPhase( const physics::MaterialParams& m,
-                   const physics::WaterParams& water, const double mass,
-                   const double vol, const double n, const double S )
-{
-    const double rho_m = mass / vol + n * S * water.density;
-    return physics::twoPhaseWaveSpeed( m.constrainedModulus(), rho_m,
-                                       water.density, n, S, 0.0,
-                                       water.bulk_modulus );
-}
-
-//! Stable step h / (c + |v|) of a point (Courant number 1), s.
-KOKKOS_INLINE_FUNCTION double pointTimeStep( const double cell_size,
-                                             const double c, const double v_x,
-                                             const double v_y )
-{
-    const double speed = Kokkos::Experimental::sqrt( v_x * v_x + v_y * v_y );
-    return cell_size / ( c + speed );
-}
 
 //---------------------------------------------------------------------------//
 /*!
@@ -75,10 +42,10 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
             if ( status_p( p ) != point_active )
                 return;
-            const double c = waveSpeedDry( materials[material_p( p )], m_p( p ),
-                                           vol_p( p ) );
-            const double dt =
-                pointTimeStep( cell_size, c, v_p( p, 0 ), v_p( p, 1 ) );
+            const double c = physics::waveSpeedDry( materials[material_p( p )],
+                                                    m_p( p ), vol_p( p ) );
+            const double dt = physics::pointTimeStep( cell_size, c, v_p( p, 0 ),
+                                                      v_p( p, 1 ) );
             dt_min = dt < dt_min ? dt : dt_min;
             c_max = c > c_max ? c : c_max;
         },
@@ -119,11 +86,11 @@ WaveSpeedLimit criticalTimeStepTwoPhase(
         KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
             if ( status_p( p ) != point_active )
                 return;
-            const double c =
-                waveSpeedTwoPhase( materials[material_p( p )], water, m_p( p ),
-                                   vol_p( p ), n_p( p ), S_p( p ) );
-            const double dt =
-                pointTimeStep( cell_size, c, v_p( p, 0 ), v_p( p, 1 ) );
+            const double c = physics::waveSpeedTwoPhase(
+                materials[material_p( p )], water, m_p( p ), vol_p( p ),
+                n_p( p ), S_p( p ) );
+            const double dt = physics::pointTimeStep( cell_size, c, v_p( p, 0 ),
+                                                      v_p( p, 1 ) );
             dt_min = dt < dt_min ? dt : dt_min;
             c_max = c > c_max ? c : c_max;
         },

@@ -1,4 +1,4 @@
-// The implicit-drag nodal update of both phases (formulation.md step 2):
+// The implicit-drag nodal update of both phases (docs/formulation.md step 2):
 // the 2x2 solve, the ties of an impermeable or flux boundary, a fixed solid;
 // and the share of a point's seepage the G2P blend keeps over a step.
 #include <physics/mpm_two_phase.hpp>

@@ -49,6 +49,22 @@ struct Kinematics
     }
 };
 
+/*!
+  \brief FLIP fraction of a step of size dt: `flip_fraction` at a step of
+  the CFL limit `dt_limit`, and proportionally less PIC at smaller steps,
+  1 - (1 - flip) min(1, dt / limit). The PIC part damps every step (the
+  water's flow relative to the solid too), so a fixed blend would damp
+  more per second the smaller the step: a wetting column took up 25 %
+  less water at a twentieth of the step. Scaled, the damping per second
+  does not depend on the step.
+*/
+inline double stepFlipFraction( const double flip_fraction, const double dt,
+                                const double dt_limit )
+{
+    const double ratio = dt_limit > 0.0 && dt < dt_limit ? dt / dt_limit : 1.0;
+    return 1.0 - ( 1.0 - flip_fraction ) * ratio;
+}
+
 } // namespace physics
 } // namespace mpm
 

@@ -2,6 +2,7 @@
 #define MPM_TWO_PHASE_HPP
 
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_nodal_water.hpp>
 #include <physics/mpm_retention.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -14,7 +15,7 @@ namespace physics
 //---------------------------------------------------------------------------//
 /*!
   \brief Implicit-drag nodal update of the two-phase momentum balance, one
-  node and one direction (formulation.md, step 2; Eqs. 9-10):
+  node and one direction (docs/formulation.md, step 2; Eqs. 9-10):
     (m_w/dt + Q) v_w' - Q v_s'          = m_w/dt v_w + F_w
     -Q v_w'          + (m_s/dt + Q) v_s' = m_s/dt v_s + F_m - F_w
   with the drag coefficient Q (kg/s) at the new time, so no permeability
@@ -51,7 +52,7 @@ struct TwoPhaseNodalUpdate
         namespace KE = Kokkos::Experimental;
         const double v_s = mv_s / m_s;
         // A node with (almost) no water moves its water with the solid.
-        const bool has_water = m_w > 1.0e-12 * m_s;
+        const bool has_water = hasWater( m_w, m_s );
         const double v_w = has_water ? mv_w / m_w : v_s;
         f_m -= damping * KE::fabs( f_m ) * sign( v_s );
 
@@ -93,36 +94,6 @@ struct TwoPhaseNodalUpdate
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Water velocity relative to the solid, m/s, on a tied component of
-  a node where a flux boundary prescribes the inward Darcy flux q (m/s,
-  volume per area and time): q = n S (v_w - v_s) with the nodal
-  n S = m_w / (rho_w V). Zero without water (nothing to carry it).
-*/
-KOKKOS_INLINE_FUNCTION double tiedSeepage( const double q, const double m_w,
-                                           const double m_s, const double vol,
-                                           const double water_density )
-{
-    return m_w > 1.0e-12 * m_s ? q * water_density * vol / m_w : 0.0;
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Nodal drag coefficient of Eq. 9 (kg/s) from nodal quantities:
-  Q = (n S)^2 mu V / k_bar with the nodal mean permeability
-  k_bar = sum N k k_rel V / sum N V. Averaging permeabilities (not the
-  resistances mu / (k k_rel)) lets water enter a dry neighbour at a wetting
-  front, where k_rel drops by ten orders of magnitude between two points.
-*/
-KOKKOS_INLINE_FUNCTION double nodalDrag( const double nS,
-                                         const double viscosity,
-                                         const double volume,
-                                         const double permeability_volume )
-{
-    return nS * nS * viscosity * volume * volume / permeability_volume;
-}
-
-//---------------------------------------------------------------------------//
-/*!
   \brief Share of the part of a point's seepage velocity w = v_w - v_s that
   the grid does not carry kept over a step (mpm::twoPhaseBlend): the drag's
   decay exp(-dt / tau), tau = f rho_w k k_rel / (n S mu) the relaxation time
@@ -155,7 +126,7 @@ seepageMemory( const double dt, const double n, const double S,
 //---------------------------------------------------------------------------//
 /*!
   \brief Newton iteration of the mass-conservative pore-pressure increment
-  of one point (Eq. 8, formulation.md step 6): solves for dp
+  of one point (Eq. 8, docs/formulation.md step 6): solves for dp
     n (S(p + dp) - S(p)) + n S dp / K_w = -dt (n S div v_w + (1 - n) S div v_s)
   (the right side is `volume_change`, dimensionless), safeguarded by
   bisection (the left side is monotone in dp). Each step() takes the
@@ -377,26 +348,6 @@ struct CellWaterEquilibrium
         return P;
     }
 };
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Wave speeds of one point (formulation.md, time step), m/s: the
-  undrained mixture wave sqrt((E_c + S^2 / (n (dS/dp + S/K_w))) / rho_m)
-  and the pore-water wave sqrt(S / ((dS/dp + S/K_w) rho_w)); returns the
-  larger.
-*/
-KOKKOS_INLINE_FUNCTION double
-twoPhaseWaveSpeed( const double constrained_modulus, const double rho_m,
-                   const double rho_w, const double n, const double S,
-                   const double dS_dp, const double bulk_modulus )
-{
-    namespace KE = Kokkos::Experimental;
-    const double compressibility = dS_dp + S / bulk_modulus;
-    const double c_mixture = KE::sqrt(
-        ( constrained_modulus + S * S / ( n * compressibility ) ) / rho_m );
-    const double c_water = KE::sqrt( S / ( compressibility * rho_w ) );
-    return c_mixture > c_water ? c_mixture : c_water;
-}
 
 } // namespace physics
 } // namespace mpm

@@ -2,10 +2,11 @@
 #define MPM_RUN_STAGES_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <records/mpm_point_fields.hpp>
+#include <records/mpm_stage_state.hpp>
 #include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
-#include <solver/mpm_stage_state.hpp>
 #include <solver/mpm_static_stop.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -14,45 +15,40 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace mpm
 {
 //---------------------------------------------------------------------------//
-//! Host copy of every particle field of a simulation.
+//! Host copy of the output's point fields (pointFields, intPointFields) of
+//! a simulation; the water fields only in a two-phase scene.
+//! Copies a View into a host vector (point-major).
+template <class View, class T>
+void copyToHost( const View& view, std::vector<T>& out )
+{
+    const auto h =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
+    out.assign( h.data(), h.data() + h.span() );
+}
+
 template <class ExecSpace>
 HostSnapshot hostSnapshot( const Simulation<ExecSpace>& sim )
 {
-    const auto& pv = sim.particles;
     HostSnapshot snap;
-    snap.num_points = pv.size();
-    auto copy = []( const auto& view, auto& out )
+    snap.num_points = sim.particles.size();
+    const auto take = [&]( const char* name, const auto& view )
     {
-        auto h =
-            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
-        out.assign( h.data(), h.data() + h.span() );
+        using value_type =
+            typename std::decay_t<decltype( view )>::non_const_value_type;
+        if ( const auto member = snapshotMemberOf<value_type>( name ) )
+            copyToHost( view, snap.*member );
     };
-    copy( pv.x_p, snap.x );
-    copy( pv.v_p, snap.v );
-    copy( pv.sigma_p, snap.sigma );
-    copy( pv.eps_p, snap.eps );
-    copy( pv.eps_p_bar_p, snap.eps_p_bar );
-    copy( pv.vol_p, snap.vol );
-    copy( pv.m_p, snap.mass );
-    copy( pv.material_p, snap.material );
-    copy( pv.id_p, snap.id );
-    copy( pv.status_p, snap.status );
+    forEachParticleView( sim.particles, take );
     if ( sim.twoPhase() )
-    {
-        const auto& wv = sim.water_particles;
-        copy( wv.p_w_p, snap.p_w );
-        copy( wv.S_p, snap.S );
-        copy( wv.n_p, snap.n );
-        copy( wv.v_w_p, snap.v_w );
-        copy( wv.k_rel_p, snap.k_rel );
-    }
+        forEachWaterParticleView( sim.water_particles, take );
     std::vector<double> x0;
-    copy( pv.x0_p, x0 );
+    copyToHost( sim.particles.x0_p, x0 );
     snap.displacement.resize( x0.size() );
     for ( std::size_t k = 0; k < x0.size(); ++k )
         snap.displacement[k] = snap.x[k] - x0[k];
@@ -144,8 +140,8 @@ inline double quasiStaticWindow( const CaseConfig& config,
     for ( const MaterialConfig& m : stage.materials )
     {
         const double E_c =
-            m.youngs_modulus_pa * ( 1.0 - m.poisson_ratio ) /
-            ( ( 1.0 + m.poisson_ratio ) * ( 1.0 - 2.0 * m.poisson_ratio ) );
+            physics::elasticParams( m.youngs_modulus_pa, m.poisson_ratio, 0.0 )
+                .constrainedModulus();
         const double rho =
             config.analysis == AnalysisType::Dry
                 ? m.density_kg_per_m3

@@ -1,0 +1,67 @@
+#ifndef MPM_WAVE_SPEEDS_HPP
+#define MPM_WAVE_SPEEDS_HPP
+
+#include <physics/mpm_material_params.hpp>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_MathematicalFunctions.hpp>
+
+namespace mpm
+{
+namespace physics
+{
+//! P-wave speed sqrt(E_c / rho) of a dry point of mass m and volume vol,
+//! m/s.
+KOKKOS_INLINE_FUNCTION double
+waveSpeedDry( const MaterialParams& m, const double mass, const double vol )
+{
+    const double rho = mass / vol;
+    return Kokkos::Experimental::sqrt( m.constrainedModulus() / rho );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Wave speeds of one point (docs/formulation.md, step 10), m/s: the
+  undrained mixture wave sqrt((E_c + S^2 / (n (dS/dp + S/K_w))) / rho_m)
+  and the pore-water wave sqrt(S / ((dS/dp + S/K_w) rho_w)); returns the
+  larger.
+*/
+KOKKOS_INLINE_FUNCTION double
+twoPhaseWaveSpeed( const double constrained_modulus, const double rho_m,
+                   const double rho_w, const double n, const double S,
+                   const double dS_dp, const double bulk_modulus )
+{
+    namespace KE = Kokkos::Experimental;
+    const double compressibility = dS_dp + S / bulk_modulus;
+    const double c_mixture = KE::sqrt(
+        ( constrained_modulus + S * S / ( n * compressibility ) ) / rho_m );
+    const double c_water = KE::sqrt( S / ( compressibility * rho_w ) );
+    return c_mixture > c_water ? c_mixture : c_water;
+}
+
+//! Fastest wave of a two-phase point of solid mass `mass`, volume vol,
+//! porosity n and saturation S (twoPhaseWaveSpeed with the saturated fluid
+//! stiffness, dS/dp_w = 0: see mpm::criticalTimeStepTwoPhase), m/s.
+KOKKOS_INLINE_FUNCTION double
+waveSpeedTwoPhase( const MaterialParams& m, const WaterParams& water,
+                   const double mass, const double vol, const double n,
+                   const double S )
+{
+    const double rho_m = mass / vol + n * S * water.density;
+    return twoPhaseWaveSpeed( m.constrainedModulus(), rho_m, water.density, n,
+                              S, 0.0, water.bulk_modulus );
+}
+
+//! Stable step h / (c + |v|) of a point (Courant number 1), s.
+KOKKOS_INLINE_FUNCTION double pointTimeStep( const double cell_size,
+                                             const double c, const double v_x,
+                                             const double v_y )
+{
+    const double speed = Kokkos::Experimental::sqrt( v_x * v_x + v_y * v_y );
+    return cell_size / ( c + speed );
+}
+
+} // namespace physics
+} // namespace mpm
+
+#endif // MPM_WAVE_SPEEDS_HPP
