@@ -2,7 +2,11 @@
 #define MPM_BENCH_PROBLEM_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <mpm_g2p.hpp>
+#include <mpm_grid_update.hpp>
+#include <mpm_p2g.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_point_update.hpp>
 #include <solver/mpm_simulation.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -107,9 +111,9 @@ void loadView( const std::vector<T>& values, const ViewType& view )
 //---------------------------------------------------------------------------//
 /*!
   \brief The block problem on ExecSpace in its prepared state, with the
-  phases of the dry MUSL step callable one by one (the stand-alone kernels;
-  Simulation::advance runs fused versions of them) to set up the input of
-  the kernel under test.
+  phases of the dry MUSL step callable one by one: the kernels
+  Simulation::advanceDry runs, in its order, on sums of their own (B-bar
+  off, as in the block case), to set up the input of the kernel under test.
 */
 template <class ExecSpace>
 class BlockProblem
@@ -119,10 +123,14 @@ class BlockProblem
     mpm::Simulation<ExecSpace> sim;
     mpm::StepSettings settings;
     ExecSpace space;
+    mpm::DryNodeSums<ExecSpace> node_sums;
+    mpm::MomentumSums<ExecSpace> momentum_sums;
 
     explicit BlockProblem( const int n )
         : prepared( preparedState( n ) )
         , sim( prepared.config )
+        , node_sums( "bench_p2g", sim.grid.geometry.numNodes() )
+        , momentum_sums( "bench_remap", sim.grid.geometry.numNodes() )
     {
         const mpm::StageConfig& stage = prepared.config.stages.front();
         settings.gravity_x = stage.gravity_m_per_s2[0];
@@ -142,31 +150,42 @@ class BlockProblem
 
     double dt() const { return prepared.dt; }
 
-    //! P2G scatter of mass, momentum and force (default duplication).
-    void scatter()
+    //! P2G scatter of mass, momentum and force into `sums`.
+    template <class Sums>
+    void scatter( const Sums& sums )
     {
-        mpm::p2gMassMomentumForce( space, sim.particles, sim.grid,
-                                   settings.gravity_x, settings.gravity_y,
-                                   sim.conditions.load_force );
+        mpm::scatterMassMomentumForce( space, sim.particles, sim.grid.geometry,
+                                       settings.gravity_x, settings.gravity_y,
+                                       sim.conditions.load_force, sums );
     }
-    //! Active nodes and the nodal velocity update.
-    void gridUpdate()
+    //! The grid update, which takes the P2G sums.
+    template <class Sums>
+    void gridUpdate( const Sums& sums )
     {
-        mpm::findActiveNodes( space, sim.grid );
-        mpm::gridUpdateDry( space, sim.grid, dt(), settings.damping,
+        mpm::gridUpdateDry( space, sim.grid, sums, dt(), settings.damping,
                             sim.solver.inertia_scaling );
     }
-    //! G2P velocity and displacement increment.
-    void g2p()
+    //! G2P with the remap scatter, and the remap, which takes its sums.
+    template <class Sums>
+    void gatherAndRemap( const Sums& sums )
     {
-        mpm::g2pVelocity( space, sim.particles, sim.grid, dt(),
-                          sim.solver.flip_fraction );
+        mpm::g2pVelocityRemap( space, sim.particles, sim.grid, dt(),
+                               sim.solver.flip_fraction, sums );
+        mpm::remapVelocity( space, sim.grid, sums );
     }
-    //! MUSL remap of momentum and the remapped nodal velocity.
-    void remap()
+    //! The last point loop: gradient, stress, positions, diagnostics.
+    void updatePoints()
     {
-        mpm::p2gMomentum( space, sim.particles, sim.grid );
-        mpm::remapVelocity( space, sim.grid );
+        mpm::updatePointsDry( space, sim.particles, sim.grid, sim.materials,
+                              dt(), false,
+                              sim.solver.remove_points_leaving_grid );
+    }
+    //! The phases before the last point loop, with the default sums.
+    void stepToPointUpdate()
+    {
+        scatter( node_sums );
+        gridUpdate( node_sums );
+        gatherAndRemap( momentum_sums );
     }
 
     //! Rate and problem counters of a finished benchmark.

@@ -15,15 +15,13 @@ import json
 import statistics
 import sys
 
-KERNELS = ["p2g", "p2g_overhead", "grid_update", "g2p", "remap", "stress_update", "step",
+KERNELS = ["p2g", "p2g_grid_update", "g2p_remap", "point_update", "step",
            "step_dry", "step_saturated", "step_unsaturated"]
 KERNEL_LABELS = {
     "p2g": "P2G (mass, momentum, force)",
-    "p2g_overhead": "P2G fixed cost only (grid reset + ScatterView create/contribute, no point loop)",
-    "grid_update": "grid update (active nodes + dry update)",
-    "g2p": "G2P (velocity)",
-    "remap": "MUSL remap (p2gMomentum + remapVelocity)",
-    "stress_update": "stress update (vel. gradient + Mohr-Coulomb)",
+    "p2g_grid_update": "P2G + grid update (takes the sums, dry update)",
+    "g2p_remap": "G2P + MUSL remap (momentum scatter, remapped velocity)",
+    "point_update": "last point loop (vel. gradient, Mohr-Coulomb, positions, diagnostics)",
     "step": "whole step (Simulation::advance)",
     "step_dry": "whole step, dry scene (soil block)",
     "step_saturated": "whole step, saturated two-phase scene",

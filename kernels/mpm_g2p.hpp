@@ -5,6 +5,7 @@
 #include <mpm_grid_views.hpp>
 #include <mpm_p2g.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_point_stencil.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_material_params.hpp>
 #include <physics/mpm_two_phase.hpp>
@@ -94,44 +95,14 @@ g2pPoint( const int p, const int ci, const int cj, const double w[4],
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Grid-to-particle velocity update with a FLIP/PIC blend,
-  v_p <- flip (v_p + sum N dv_i) + (1 - flip) sum N v_i,
-  and the point's displacement increment du_p = dt sum N v_i (applied to
-  x_p after the stress update, so that the whole MUSL step uses the shape
-  functions at the start-of-step positions).
-*/
-template <class ExecSpace>
-void g2pVelocity( const ExecSpace& exec_space,
-                  const ParticleViews<ExecSpace>& pv,
-                  const GridViews<ExecSpace>& gv, const double dt,
-                  const double flip_fraction )
-{
-    const auto grid = gv.geometry;
-    const auto v_i = unmanaged( gv.v_i );
-    const auto dv_i = unmanaged( gv.dv_i );
-    const auto x_p = unmanaged( pv.x_p );
-    const auto v_p = unmanaged( pv.v_p );
-    const auto du_p = unmanaged( pv.du_p );
-    const auto status_p = unmanaged( pv.status_p );
-
-    Kokkos::parallel_for(
-        "mpm::g2p_velocity",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            g2pPoint( p, ci, cj, w, v_i, dv_i, flip_fraction, v_p, dt, du_p );
-        } );
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief The time loop's G2P and MUSL remap scatter in one point loop:
-  g2pVelocity, then the updated momentum m_p v_p into `sums` (the points
-  have not moved, so they touch the nodes of the step's P2G).
+  \brief Grid-to-particle update and MUSL remap scatter in one point loop:
+  the FLIP/PIC blend
+  v_p <- flip (v_p + sum N dv_i) + (1 - flip) sum N v_i
+  and the displacement increment du_p = dt sum N v_i (applied to x_p in
+  the last point loop, so that the whole MUSL step uses the shape
+  functions at the start-of-step positions), then the updated momentum
+  m_p v_p into `sums` (the points have not moved, so they touch the nodes
+  of the step's P2G).
 */
 template <class ExecSpace, class Duplication>
 void g2pVelocityRemap( const ExecSpace& exec_space,
@@ -145,21 +116,14 @@ void g2pVelocityRemap( const ExecSpace& exec_space,
     const int ny1 = grid.ny + 1;
     const auto v_i = unmanaged( gv.v_i );
     const auto dv_i = unmanaged( gv.dv_i );
-    const auto x_p = unmanaged( pv.x_p );
     const auto v_p = unmanaged( pv.v_p );
     const auto du_p = unmanaged( pv.du_p );
     const auto m_p = unmanaged( pv.m_p );
-    const auto status_p = unmanaged( pv.status_p );
 
-    Kokkos::parallel_for(
-        "mpm::g2p_velocity_remap",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+    forEachPointStencil(
+        "mpm::g2p_velocity_remap", exec_space, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             g2pPoint( p, ci, cj, w, v_i, dv_i, flip_fraction, v_p, dt, du_p );
             scatterPointMomentum( sums.access(), ci, cj, ny1, w, m_p( p ),
                                   v_p( p, 0 ), v_p( p, 1 ) );
@@ -170,7 +134,7 @@ void g2pVelocityRemap( const ExecSpace& exec_space,
 /*!
   \brief Two-phase grid-to-particle update and MUSL remap scatter in one
   point loop: the FLIP/PIC blend of both phases (twoPhaseBlend; du_p as
-  g2pVelocity), then both phases' updated momenta
+  g2pVelocityRemap), then both phases' updated momenta
   into `sums` (mv_s x, y; mv_w x, y), with the water mass
   m_w = n S rho_w V of the point.
 */
@@ -191,27 +155,20 @@ void g2pVelocityRemapTwoPhase(
     const auto dv_s_i = unmanaged( gv.dv_i );
     const auto v_w_i = unmanaged( wg.v_w_i );
     const auto dv_w_i = unmanaged( wg.dv_w_i );
-    const auto x_p = unmanaged( pv.x_p );
     const auto v_s_p = unmanaged( pv.v_p );
     const auto du_p = unmanaged( pv.du_p );
     const auto m_s_p = unmanaged( pv.m_p );
     const auto vol_p = unmanaged( pv.vol_p );
-    const auto status_p = unmanaged( pv.status_p );
     const auto v_w_p = unmanaged( wv.v_w_p );
     const auto S_p = unmanaged( wv.S_p );
     const auto n_p = unmanaged( wv.n_p );
     const auto k_rel_p = unmanaged( wv.k_rel_p );
     const auto material_p = unmanaged( pv.material_p );
 
-    Kokkos::parallel_for(
-        "mpm::g2p_velocity_remap_two_phase",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+    forEachPointStencil(
+        "mpm::g2p_velocity_remap_two_phase", exec_space, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             double v_s_pic[2], dv_s[2], v_w_pic[2], dv_w[2];
             interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_s_pic, dv_s );
             interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_w_pic, dv_w );

@@ -4,6 +4,7 @@
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_point_stencil.hpp>
 #include <mpm_scatter.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -53,24 +54,17 @@ void scatterMassMomentumForce(
     const auto sums = scatter.handle();
     using F = DryNodeField;
     const int ny1 = grid.ny + 1;
-    const auto x_p = unmanaged( pv.x_p );
     const auto v_p = unmanaged( pv.v_p );
     const auto m_p = unmanaged( pv.m_p );
     const auto vol_p = unmanaged( pv.vol_p );
     const auto sigma_p = unmanaged( pv.sigma_p );
-    const auto status_p = unmanaged( pv.status_p );
     const auto load_p = unmanaged( pv.load_p );
     const auto loads = unmanaged( load_force );
 
-    Kokkos::parallel_for(
-        "mpm::p2g_mass_momentum_force",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+    forEachPointStencil(
+        "mpm::p2g_mass_momentum_force", exec_space, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
 
             const auto node = sums.access();
             const double m = m_p( p );
@@ -117,58 +111,6 @@ takeMassMomentumForce( const Sums& sums, const int n, const int i, const int j,
 }
 
 //---------------------------------------------------------------------------//
-/*!
-  \brief Particle-to-grid scatter of mass, momentum and force into gv.m_i,
-  gv.p_i and gv.f_i (scatterMassMomentumForce with a temporary sum; the
-  time loop keeps its sums between steps). Resets the grid fields it
-  writes; gv.active_i lists the touched nodes afterwards.
-*/
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type,
-          class LoadView>
-void p2gMassMomentumForce( const ExecSpace& exec_space,
-                           const ParticleViews<ExecSpace>& pv,
-                           GridViews<ExecSpace>& gv, const double gravity_x,
-                           const double gravity_y, const LoadView& load_force )
-{
-    const DryNodeSums<ExecSpace, Duplication> scatter( "p2g_sums",
-                                                       gv.geometry.numNodes() );
-    scatterMassMomentumForce( exec_space, pv, gv.geometry, gravity_x, gravity_y,
-                              load_force, scatter );
-    const auto sums = scatter.handle();
-    Kokkos::deep_copy( exec_space, gv.m_i, 0.0 );
-    Kokkos::deep_copy( exec_space, gv.p_i, 0.0 );
-    Kokkos::deep_copy( exec_space, gv.f_i, 0.0 );
-    gv.num_active = scatter.listTouched( exec_space, gv.active_i );
-
-    const auto m_i = unmanaged( gv.m_i );
-    const auto p_i = unmanaged( gv.p_i );
-    const auto f_i = unmanaged( gv.f_i );
-    const auto active_i = unmanaged( gv.active_i );
-    const int ny1 = gv.geometry.ny + 1;
-    Kokkos::parallel_for(
-        "mpm::take_mass_momentum_force",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            takeMassMomentumForce( sums, n, n / ny1, n % ny1, m_i, p_i, f_i );
-        } );
-}
-
-//! p2gMassMomentumForce without loads.
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type>
-void p2gMassMomentumForce( const ExecSpace& exec_space,
-                           const ParticleViews<ExecSpace>& pv,
-                           GridViews<ExecSpace>& gv, const double gravity_x,
-                           const double gravity_y )
-{
-    p2gMassMomentumForce<ExecSpace, Duplication>(
-        exec_space, pv, gv, gravity_x, gravity_y,
-        LoadForceView<ExecSpace>( "no_loads", 0 ) );
-}
-
-//---------------------------------------------------------------------------//
 //! MUSL remap scatter of one point's momentum, p_i += N m_p v_p, into
 //! fields (field, field + 1) of its 4 nodes.
 template <class Access>
@@ -183,52 +125,6 @@ scatterPointMomentum( const Access& node, const int ci, const int cj,
         node.add( n, field, w[k] * m * v_x );
         node.add( n, field + 1, w[k] * m * v_y );
     }
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief MUSL remap: scatter the updated point momenta, p_i = sum N m_p v_p,
-  into gv.p_i on the nodes listed in gv.active_i (those of the last
-  p2gMassMomentumForce; masses are unchanged from it).
-*/
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type>
-void p2gMomentum( const ExecSpace& exec_space,
-                  const ParticleViews<ExecSpace>& pv, GridViews<ExecSpace>& gv )
-{
-    const MomentumSums<ExecSpace, Duplication> scatter(
-        "remap_sums", gv.geometry.numNodes() );
-    const auto sums = scatter.handle();
-    const auto grid = gv.geometry;
-    const int ny1 = grid.ny + 1;
-    const auto x_p = unmanaged( pv.x_p );
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto status_p = unmanaged( pv.status_p );
-
-    Kokkos::parallel_for(
-        "mpm::p2g_momentum",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            scatterPointMomentum( sums.access(), ci, cj, ny1, w, m_p( p ),
-                                  v_p( p, 0 ), v_p( p, 1 ) );
-        } );
-
-    const auto p_i = unmanaged( gv.p_i );
-    const auto active_i = unmanaged( gv.active_i );
-    Kokkos::parallel_for(
-        "mpm::take_momentum",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            p_i( n / ny1, n % ny1, 0 ) = sums.take( n, 0 );
-            p_i( n / ny1, n % ny1, 1 ) = sums.take( n, 1 );
-        } );
 }
 
 } // namespace mpm

@@ -60,32 +60,6 @@ struct StressPointUpdate
     }
 };
 
-//---------------------------------------------------------------------------//
-//! Stress update of every active point from its grad_v_p
-//! (StressPointUpdate).
-template <class ExecSpace>
-void stressUpdate( const ExecSpace& exec_space,
-                   const ParticleViews<ExecSpace>& pv,
-                   const physics::MaterialTable& materials, const double dt )
-{
-    const StressPointUpdate<ExecSpace> update( pv, dt );
-    const auto grad_v_p = unmanaged( pv.grad_v_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto status_p = unmanaged( pv.status_p );
-
-    Kokkos::parallel_for(
-        "mpm::stress_update",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            const double L[2][2] = {
-                { grad_v_p( p, 0, 0 ), grad_v_p( p, 0, 1 ) },
-                { grad_v_p( p, 1, 0 ), grad_v_p( p, 1, 1 ) } };
-            update( p, L, materials[material_p( p )] );
-        } );
-}
-
 } // namespace mpm
 
 #endif // MPM_STRESS_UPDATE_HPP

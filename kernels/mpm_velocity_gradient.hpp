@@ -4,6 +4,7 @@
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
+#include <mpm_point_stencil.hpp>
 #include <mpm_scatter.hpp>
 #include <mpm_water_views.hpp>
 
@@ -66,52 +67,6 @@ waterDivergenceAt( const int ci, const int cj, const double dwdx[4],
 }
 
 //---------------------------------------------------------------------------//
-/*!
-  \brief Water volume rate of Eq. 8 at a point, 1/s:
-  r = n S div v_w + (1 - n) S div v_s, with n S div v_w from the nodal
-  relative flux (waterDivergenceAt), so that r = div q + S div v_s.
-*/
-KOKKOS_INLINE_FUNCTION double waterVolumeRate( const double n, const double S,
-                                               const double div_v_w,
-                                               const double L[2][2] )
-{
-    return n * S * div_v_w + ( 1.0 - n ) * S * ( L[0][0] + L[1][1] );
-}
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Velocity gradient at the points from the remapped nodal velocity,
-  L_p = sum v_i (x) grad N_i (MUSL).
-*/
-template <class ExecSpace>
-void velocityGradient( const ExecSpace& exec_space,
-                       const ParticleViews<ExecSpace>& pv,
-                       const GridViews<ExecSpace>& gv )
-{
-    const auto grid = gv.geometry;
-    const auto v_i = unmanaged( gv.v_i );
-    const auto x_p = unmanaged( pv.x_p );
-    const auto grad_v_p = unmanaged( pv.grad_v_p );
-    const auto status_p = unmanaged( pv.status_p );
-
-    Kokkos::parallel_for(
-        "mpm::velocity_gradient",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
-            double L[2][2];
-            gradientAt( ci, cj, dwdx, dwdy, v_i, L );
-            for ( int a = 0; a < 2; ++a )
-                for ( int b = 0; b < 2; ++b )
-                    grad_v_p( p, a, b ) = L[a][b];
-        } );
-}
-
-//---------------------------------------------------------------------------//
 //! Fields of the B-bar cell sums: point volume, volume times tr(L) and
 //! (two-phase) volume times div v_w.
 struct CellField
@@ -132,7 +87,8 @@ using CellSums = GridScatter<ExecSpace, CellField::count, Duplication>;
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Velocity gradient of every point (velocityGradient; two-phase
+  \brief Velocity gradient of every point, L_p = sum v_i (x) grad N_i
+  (gradientAt; two-phase
   also its water divergence, waterDivergenceAt) and, for B-bar (Hughes
   1980), its volume and volume-weighted volumetric rates summed per cell
   into `sums` (CellField). Pass empty water views for a dry scene.
@@ -154,20 +110,14 @@ void velocityGradientCellSums(
     const auto x_p = unmanaged( pv.x_p );
     const auto vol_p = unmanaged( pv.vol_p );
     const auto grad_v_p = unmanaged( pv.grad_v_p );
-    const auto status_p = unmanaged( pv.status_p );
     const auto div_v_w_p = unmanaged( wv.div_v_w_p );
     const auto n_p = unmanaged( wv.n_p );
     const auto S_p = unmanaged( wv.S_p );
 
-    Kokkos::parallel_for(
-        "mpm::velocity_gradient_cell_sums",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+    forEachPointStencil(
+        "mpm::velocity_gradient_cell_sums", exec_space, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             double L[2][2];
             gradientAt( ci, cj, dwdx, dwdy, v_s_i, L );
             for ( int a = 0; a < 2; ++a )
@@ -182,9 +132,10 @@ void velocityGradientCellSums(
                 div_v_w_p( p ) = div_v_w;
             }
             // Points on the grid's far edges belong to no cell.
-            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+            int cell_i, cell_j;
+            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), cell_i, cell_j ) )
                 return;
-            const int c = ci * grid.ny + cj;
+            const int c = cell_i * grid.ny + cell_j;
             const auto cell = sums.access();
             cell.add( c, CellField::vol, vol_p( p ) );
             cell.add( c, CellField::dvol, vol_p( p ) * ( L[0][0] + L[1][1] ) );

@@ -4,13 +4,15 @@
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
 #include <mpm_p2g.hpp>
-#include <mpm_stress_update.hpp>
-#include <mpm_velocity_gradient.hpp>
+#include <mpm_point_update.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_Random.hpp>
 
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
 
 namespace
 {
@@ -19,6 +21,86 @@ class Transfer : public ::testing::Test
 {
 };
 TYPED_TEST_SUITE( Transfer, mpm_test::Backends, mpm_test::BackendName );
+
+// The dry step's kernels as Simulation::advanceDry calls them: the P2G
+// scatter into sums kept between steps, the grid update that takes them,
+// G2P with the remap scatter, the remap, and the last point loop.
+template <class ExecSpace>
+struct DryStep
+{
+    mpm::ParticleViews<ExecSpace> pv;
+    mpm::GridViews<ExecSpace> gv;
+    mpm::DryNodeSums<ExecSpace> node_sums;
+    mpm::MomentumSums<ExecSpace> momentum_sums;
+    mpm::physics::MaterialTable materials;
+
+    DryStep( const mpm::ParticleViews<ExecSpace>& points,
+             const mpm::physics::GridGeometry& grid )
+        : pv( points )
+        , gv( grid )
+        , node_sums( "p2g_dry", grid.numNodes() )
+        , momentum_sums( "remap_dry", grid.numNodes() )
+    {
+        materials.materials[0] =
+            mpm::physics::elasticParams( 1.0e7, 0.3, 1800.0 );
+        materials.size = 1;
+    }
+
+    //! P2G and the grid update (their nodal m_i, p_i, f_i, v_i, dv_i).
+    void scatterAndUpdateGrid( const double gravity_y, const double dt )
+    {
+        mpm::scatterMassMomentumForce(
+            ExecSpace(), pv, gv.geometry, 0.0, gravity_y,
+            mpm::LoadForceView<ExecSpace>( "no_loads", 0 ), node_sums );
+        mpm::gridUpdateDry( ExecSpace(), gv, node_sums, dt, 0.0, 1.0 );
+    }
+    //! G2P (with the remap scatter) and the remap.
+    void gatherAndRemap( const double dt, const double flip_fraction )
+    {
+        mpm::g2pVelocityRemap( ExecSpace(), pv, gv, dt, flip_fraction,
+                               momentum_sums );
+        mpm::remapVelocity( ExecSpace(), gv, momentum_sums );
+    }
+    //! Velocity gradient, stress, positions and diagnostics.
+    mpm::PointUpdateReport updatePoints( const double dt )
+    {
+        return mpm::updatePointsDry( ExecSpace(), pv, gv, materials, dt, false,
+                                     false );
+    }
+};
+
+//! A host copy of `view` that later kernels do not change (a mirror view
+//! of a host View would be the View itself).
+template <class ViewType>
+typename ViewType::HostMirror hostCopy( const ViewType& view )
+{
+    auto copy = Kokkos::create_mirror( view );
+    Kokkos::deep_copy( copy, view );
+    return copy;
+}
+
+//! Sums of the nodal mass, momentum and force.
+template <class ExecSpace>
+std::array<double, 5> nodalTotals( const mpm::GridViews<ExecSpace>& gv )
+{
+    const auto m_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.m_i );
+    const auto p_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.p_i );
+    const auto f_i =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
+    std::array<double, 5> total{};
+    for ( int i = 0; i <= gv.geometry.nx; ++i )
+        for ( int j = 0; j <= gv.geometry.ny; ++j )
+        {
+            total[0] += m_i( i, j );
+            total[1] += p_i( i, j, 0 );
+            total[2] += p_i( i, j, 1 );
+            total[3] += f_i( i, j, 0 );
+            total[4] += f_i( i, j, 1 );
+        }
+    return total;
+}
 
 //---------------------------------------------------------------------------//
 // P2G then sum over nodes conserves mass and momentum to round-off.
@@ -34,9 +116,12 @@ TYPED_TEST( Transfer, p2g_conserves_mass_and_momentum )
     Kokkos::fill_random( pv.m_p, pool, 0.5, 1.5 );
     Kokkos::deep_copy( pv.vol_p, 0.01 );
     Kokkos::deep_copy( pv.status_p, mpm::point_active );
-    mpm::GridViews<exec_space> gv( grid );
-
-    mpm::p2gMassMomentumForce( exec_space(), pv, gv, 0.0, -9.81 );
+    DryStep<exec_space> step( pv, grid );
+    // Twice: the grid update takes (and clears) the sums it uses.
+    step.scatterAndUpdateGrid( -9.81, 0.0 );
+    const auto first = nodalTotals( step.gv );
+    step.scatterAndUpdateGrid( -9.81, 0.0 );
+    const auto total = nodalTotals( step.gv );
 
     double m_p_sum = 0.0, px_p_sum = 0.0, py_p_sum = 0.0;
     Kokkos::parallel_reduce(
@@ -47,26 +132,68 @@ TYPED_TEST( Transfer, p2g_conserves_mass_and_momentum )
             py += pv.m_p( p ) * pv.v_p( p, 1 );
         },
         m_p_sum, px_p_sum, py_p_sum );
-    const auto m_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.m_i );
-    const auto p_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.p_i );
-    const auto f_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
-    double m_sum = 0.0, px_sum = 0.0, py_sum = 0.0, fy_sum = 0.0;
-    for ( int i = 0; i <= grid.nx; ++i )
-        for ( int j = 0; j <= grid.ny; ++j )
-        {
-            m_sum += m_i( i, j );
-            px_sum += p_i( i, j, 0 );
-            py_sum += p_i( i, j, 1 );
-            fy_sum += f_i( i, j, 1 );
-        }
+    for ( int k = 0; k < 5; ++k )
+        EXPECT_NEAR( total[k], first[k], 1e-12 * 10.0 * m_p_sum );
+    const double m_sum = total[0], px_sum = total[1], py_sum = total[2],
+                 fy_sum = total[4];
+    EXPECT_NEAR( total[3], 0.0, 1e-12 * 9.81 * m_p_sum );
     EXPECT_NEAR( m_sum, m_p_sum, 1e-12 * m_p_sum );
     EXPECT_NEAR( px_sum, px_p_sum, 1e-12 * std::abs( m_p_sum ) * 3.0 );
     EXPECT_NEAR( py_sum, py_p_sum, 1e-12 * std::abs( m_p_sum ) * 3.0 );
     // Zero stress: the nodal forces are the weight.
     EXPECT_NEAR( fy_sum, -9.81 * m_p_sum, 1e-12 * 9.81 * m_p_sum );
+}
+
+//---------------------------------------------------------------------------//
+// A whole dry step of stress-free points in uniform motion, without
+// gravity, with any FLIP fraction: P2G, grid update, G2P, remap and the
+// point loop keep the velocity, strain nothing and move every point by
+// dt v; the step's diagnostics report the kinetic energy.
+TYPED_TEST( Transfer, uniform_motion_is_kept_by_the_whole_step )
+{
+    using exec_space = TypeParam;
+    const auto grid = mpm_test::makeGrid( 8, 7, 0.5 );
+    auto pv = mpm_test::gaussPoints<exec_space>( grid, 2, 6, 2, 5, 1800.0 );
+    const double v[2] = { 0.8, -0.3 };
+    auto v_h = Kokkos::create_mirror( pv.v_p );
+    for ( int p = 0; p < pv.size(); ++p )
+        for ( int d = 0; d < 2; ++d )
+            v_h( p, d ) = v[d];
+    Kokkos::deep_copy( pv.v_p, v_h );
+    const auto x = hostCopy( pv.x_p );
+    DryStep<exec_space> step( pv, grid );
+    const double dt = 1.0e-3;
+    step.scatterAndUpdateGrid( 0.0, dt );
+    step.gatherAndRemap( dt, 0.7 );
+    const mpm::PointUpdateReport report = step.updatePoints( dt );
+
+    const auto x_new =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
+    const auto v_new =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.v_p );
+    const auto L =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.grad_v_p );
+    const auto sigma =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.sigma_p );
+    const auto m =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.m_p );
+    double energy = 0.0;
+    for ( int p = 0; p < pv.size(); ++p )
+    {
+        for ( int d = 0; d < 2; ++d )
+        {
+            EXPECT_NEAR( v_new( p, d ), v[d], 1e-14 ) << "p " << p;
+            EXPECT_NEAR( x_new( p, d ), x( p, d ) + dt * v[d], 1e-15 );
+            EXPECT_NEAR( L( p, d, 0 ), 0.0, 1e-12 );
+            EXPECT_NEAR( L( p, d, 1 ), 0.0, 1e-12 );
+        }
+        for ( int c = 0; c < 4; ++c )
+            EXPECT_NEAR( sigma( p, c ), 0.0, 1e-3 ) << "p " << p;
+        energy += 0.5 * m( p ) * ( v[0] * v[0] + v[1] * v[1] );
+    }
+    EXPECT_EQ( report.first_outside, -1 );
+    EXPECT_EQ( report.num_removed, 0 );
+    EXPECT_NEAR( report.diagnostics.kinetic_energy, energy, 1e-12 * energy );
 }
 
 //---------------------------------------------------------------------------//
@@ -77,7 +204,8 @@ TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
     using exec_space = TypeParam;
     const auto grid = mpm_test::makeGrid( 6, 5, 0.5 );
     auto pv = mpm_test::gaussPoints<exec_space>( grid, 1, 5, 1, 4, 2000.0 );
-    mpm::GridViews<exec_space> gv( grid );
+    DryStep<exec_space> step( pv, grid );
+    auto& gv = step.gv;
     // v(x) = a + B x
     const double a[2] = { 0.3, -0.7 };
     const double B[2][2] = { { 0.11, -0.23 }, { 0.05, 0.17 } };
@@ -91,10 +219,13 @@ TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
     Kokkos::deep_copy( gv.dv_i, 0.0 );
 
     const double dt = 1.0e-3;
-    mpm::g2pVelocity( exec_space(), pv, gv, dt, 0.0 );
-    mpm::velocityGradient( exec_space(), pv, gv );
+    const auto x = hostCopy( pv.x_p );
+    // G2P (PIC) and the point loop on the linear field (no remap: the
+    // remap projects it, exact only for a uniform field).
+    mpm::g2pVelocityRemap( exec_space(), pv, gv, dt, 0.0, step.momentum_sums );
+    step.updatePoints( dt );
 
-    const auto x =
+    const auto x_new =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
     const auto v =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.v_p );
@@ -109,6 +240,7 @@ TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
                 a[d] + B[d][0] * x( p, 0 ) + B[d][1] * x( p, 1 );
             EXPECT_NEAR( v( p, d ), exact, 1e-14 );
             EXPECT_NEAR( du( p, d ), dt * exact, 1e-17 );
+            EXPECT_NEAR( x_new( p, d ), x( p, d ) + dt * exact, 1e-15 );
             EXPECT_NEAR( L( p, d, 0 ), B[d][0], 1e-13 );
             EXPECT_NEAR( L( p, d, 1 ), B[d][1], 1e-13 );
         }
@@ -122,7 +254,8 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
     using exec_space = TypeParam;
     const auto grid = mpm_test::makeGrid( 6, 6, 0.25 );
     auto pv = mpm_test::gaussPoints<exec_space>( grid, 1, 5, 1, 5, 1800.0 );
-    mpm::GridViews<exec_space> gv( grid );
+    DryStep<exec_space> step( pv, grid );
+    auto& gv = step.gv;
     const double B[2][2] = { { 1.0e-3, 4.0e-4 }, { -2.0e-4, -2.0e-3 } };
     auto v_h = Kokkos::create_mirror( gv.v_i );
     for ( int i = 0; i <= grid.nx; ++i )
@@ -132,13 +265,10 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
                     B[d][0] * grid.nodeX( i ) + B[d][1] * grid.nodeY( j );
     Kokkos::deep_copy( gv.v_i, v_h );
 
-    mpm::physics::MaterialTable materials;
-    materials.materials[0] = mpm::physics::elasticParams( 1.0e7, 0.3, 1800.0 );
-    materials.size = 1;
+    const auto& materials = step.materials;
     const double dt = 1.0;
-    mpm::velocityGradient( exec_space(), pv, gv );
-    // Pure strain: remove the spin so the Jaumann term does not enter.
-    mpm::stressUpdate( exec_space(), pv, materials, dt );
+    // The point loop: gradient and stress (du_p = 0: no point moves).
+    step.updatePoints( dt );
 
     const double K = materials[0].bulk_modulus;
     const double G = materials[0].shear_modulus;
@@ -161,7 +291,7 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
         }
 
     // Uniform stress: interior nodes feel no internal force.
-    mpm::p2gMassMomentumForce( exec_space(), pv, gv, 0.0, 0.0 );
+    step.scatterAndUpdateGrid( 0.0, 0.0 );
     const auto f =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
     double boundary_force = 0.0;
