@@ -18,9 +18,11 @@
 #include <mpm_velocity_gradient.hpp>
 #include <mpm_water_content.hpp>
 #include <mpm_water_views.hpp>
+#include <physics/mpm_kinematics.hpp>
 #include <setup/mpm_base_slivers.hpp>
 #include <setup/mpm_retention_tables.hpp>
 #include <solver/mpm_diagnosis.hpp>
+#include <solver/mpm_host_transfer.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_setup.hpp>
 
@@ -45,7 +47,7 @@ struct StepSettings
 /*!
   \brief The state of one simulation (points, grid, materials) and the
   explicit MUSL step, dry (single phase) or two-phase (solid + water,
-  formulation.md). Water fields exist only in two-phase scenes.
+  docs/formulation.md). Water fields exist only in two-phase scenes.
 
   The step keeps its grid sums (GridScatter) between steps and touches
   only the nodes and cells of the points. Its last point loop also
@@ -138,16 +140,16 @@ class Simulation
         _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
                               : std::vector<int>();
         if ( complete )
-            fixBaseSlivers( grid.geometry, activePositions(), _cut_cells, flags,
-                            &water_flags );
+            fixBaseSlivers( grid.geometry, activePointPositions( particles ),
+                            _cut_cells, flags, &water_flags );
         const std::vector<int> walls =
             nodeFlags( grid_config, interiorWalls( stage.boundaries, true ) );
         for ( std::size_t n = 0; n < flags.size(); ++n )
             flags[n] |= walls[n];
-        copyNodeFlags( flags, grid.flags_i );
+        copyNodeFlags( grid.geometry, flags, grid.flags_i );
         flagsRestored();
         if ( twoPhase() )
-            copyNodeFlags( water_flags, water_grid.flags_w_i );
+            copyNodeFlags( grid.geometry, water_flags, water_grid.flags_w_i );
         conditions.apply( stage, particles, water_particles, grid_config );
     }
 
@@ -297,20 +299,11 @@ class Simulation
     //! True if _diagnostics describe the current state.
     bool diagnosticsCurrent() const { return _diagnostics_step == step; }
 
-    /*!
-      \brief FLIP fraction of a step of size dt: solver.flip_fraction at a
-      step of the CFL limit, and proportionally less PIC at smaller steps,
-      1 - (1 - flip) min(1, dt / limit). The PIC part damps every step (the
-      water's flow relative to the solid too), so a fixed blend would damp
-      more per second the smaller the step: a wetting column took up 25 %
-      less water at a twentieth of the step. Scaled, the damping per second
-      does not depend on the step.
-    */
+    //! FLIP fraction of a step of size dt (physics::stepFlipFraction).
     double stepFlipFraction( const double dt ) const
     {
-        const double limit = waveSpeedLimit().dt_limit;
-        const double ratio = limit > 0.0 && dt < limit ? dt / limit : 1.0;
-        return 1.0 - ( 1.0 - solver.flip_fraction ) * ratio;
+        return physics::stepFlipFraction( solver.flip_fraction, dt,
+                                          waveSpeedLimit().dt_limit );
     }
 
     //! B-bar: the cell averages of the step's velocity gradients.
@@ -345,22 +338,36 @@ class Simulation
                                 solver.remove_points_leaving_grid );
     }
 
-    //! Two phases, formulation.md steps 1-9 (drag implicit at the nodes).
+    /*!
+      \brief The two-phase step, in the order of docs/formulation.md §3
+      (the paper's §2.6), each phase one kernel whose body is a physics
+      functor; the step numbers are those of docs/formulation.md.
+    */
     PointUpdateReport advanceTwoPhase( const double dt,
                                        const StepSettings& settings )
     {
         const ExecSpace exec;
         const BaseCellAccess<ExecSpace> base( _base_cells, grid.geometry );
+        const bool saturated = analysis == AnalysisType::Saturated;
+
+        // 1. P2G: masses, momenta, the mixture force with Bishop's total
+        // stress (Eq. 11) and the water force of Eq. 9 (1b: the share of
+        // the empty parts of cells cut by the base).
         scatterTwoPhase( exec, particles, water_particles, grid.geometry,
                          materials, water, settings.gravity_x,
                          settings.gravity_y, conditions.load_force,
                          _two_phase_sums, base );
         baseCellForces( exec, _base_cells, grid.geometry, settings.gravity_x,
                         settings.gravity_y, water.density );
+
+        // 2. Nodal velocities of both phases, drag implicit (Eqs. 9-10).
         gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
                             settings.damping, water.density, water.viscosity,
                             solver.inertia_scaling, base,
                             conditions.inflow_flux_i );
+
+        // 3. G2P: point velocities (FLIP/PIC) and displacement increments;
+        // 4. the MUSL remap of both phases (4b: the base cells' water).
         g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
                                   water_grid, dt, stepFlipFraction( dt ),
                                   solver.water_relative_flip, materials, water,
@@ -368,9 +375,17 @@ class Simulation
         remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum,
                                conditions.inflow_flux_i, water.density );
         baseCellRates( exec, _base_cells, grid, water_grid, water.density );
+
+        // 5. Velocity gradients and water divergence: with B-bar, their
+        // cell averages first.
         if ( solver.bbar )
             cellAverages( exec );
-        const bool saturated = analysis == AnalysisType::Saturated;
+
+        // 5-9 in one point loop (StepVelocityGradient, then
+        // PorePressurePointUpdate: Eq. 8 pore pressure, Eq. 2 porosity, the
+        // retention state; then StressPointUpdate: the effective stress),
+        // the positions, and the diagnostics of the new state (10: the
+        // CFL limit of the next step).
         const auto pore_pressure = porePressurePointUpdate(
             particles, water_particles, water, dt, saturated,
             _retention_current, conditions.prescribed_p_w,
@@ -380,11 +395,12 @@ class Simulation
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,
             pore_pressure, base );
+
+        // 6b. Cell water equilibrium. It changes S after the point loop's
+        // CFL reduction: its own limit replaces that one (a separate
+        // reduction if it did not list every active point).
         if ( solver.cell_equilibrium )
         {
-            // It changes S after the point update's CFL reduction: its own
-            // limit replaces that one (a separate reduction if it did not
-            // list every active point).
             const CellEquilibriumLimit after = cellWaterEquilibrium(
                 exec, particles, water_particles, grid.geometry, materials,
                 water, saturated, solver.cell_pressure_slope, _cell_lists );
@@ -400,34 +416,6 @@ class Simulation
         // S_p and dS_dp_p now hold the retention law at p_w_p.
         _retention_current = !saturated;
         return report;
-    }
-
-    //! Positions (x, y) of the active points, on the host.
-    std::vector<double> activePositions() const
-    {
-        const auto x_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), particles.x_p );
-        const auto status_h = Kokkos::create_mirror_view_and_copy(
-            Kokkos::HostSpace(), particles.status_p );
-        std::vector<double> x;
-        for ( int p = 0; p < particles.size(); ++p )
-            if ( status_h( p ) == point_active )
-            {
-                x.push_back( x_h( p, 0 ) );
-                x.push_back( x_h( p, 1 ) );
-            }
-        return x;
-    }
-
-    void copyNodeFlags( const std::vector<int>& flags,
-                        const typename GridViews<ExecSpace>::int_view& view )
-    {
-        auto flags_h = Kokkos::create_mirror_view( view );
-        const int ny1 = grid.geometry.ny + 1;
-        for ( int i = 0; i <= grid.geometry.nx; ++i )
-            for ( int j = 0; j < ny1; ++j )
-                flags_h( i, j ) = flags[i * ny1 + j];
-        Kokkos::deep_copy( view, flags_h );
     }
 
     //! The tabulated retention laws of `materials` (solver.retention_table).
