@@ -2,7 +2,7 @@
 #define MPM_TERZAGHI_ERROR_HPP
 
 #include <mpm_terzaghi.hpp>
-#include <solver/mpm_run_observer.hpp>
+#include <records/mpm_run_records.hpp>
 
 #include <array>
 #include <cmath>

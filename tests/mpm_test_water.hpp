@@ -1,7 +1,7 @@
 #ifndef MPM_TEST_WATER_HPP
 #define MPM_TEST_WATER_HPP
 
-#include <solver/mpm_run_observer.hpp>
+#include <records/mpm_run_records.hpp>
 
 #include <string>
 

@@ -71,6 +71,30 @@ struct ParticleViews
 template <class ExecSpace>
 using LoadForceView = Kokkos::View<double* [2], DeviceType<ExecSpace>>;
 
+//---------------------------------------------------------------------------//
+//! Calls f(name, view) for every View of ParticleViews, named as the
+//! checkpoint and the point-field registry (records/mpm_point_fields.hpp)
+//! name it. Views may be const.
+template <class Views, class F>
+void forEachParticleView( Views& pv, F&& f )
+{
+    f( "x_p", pv.x_p );
+    f( "x0_p", pv.x0_p );
+    f( "v_p", pv.v_p );
+    f( "du_p", pv.du_p );
+    f( "m_p", pv.m_p );
+    f( "vol_p", pv.vol_p );
+    f( "vol0_p", pv.vol0_p );
+    f( "sigma_p", pv.sigma_p );
+    f( "eps_p", pv.eps_p );
+    f( "eps_p_bar_p", pv.eps_p_bar_p );
+    f( "grad_v_p", pv.grad_v_p );
+    f( "material_p", pv.material_p );
+    f( "id_p", pv.id_p );
+    f( "status_p", pv.status_p );
+    f( "load_p", pv.load_p );
+}
+
 } // namespace mpm
 
 #endif // MPM_PARTICLE_VIEWS_HPP

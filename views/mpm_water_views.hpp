@@ -107,6 +107,25 @@ struct WaterGridViews
     }
 };
 
+//---------------------------------------------------------------------------//
+//! Calls f(name, view) for every View of WaterParticleViews (as
+//! forEachParticleView).
+template <class Views, class F>
+void forEachWaterParticleView( Views& wv, F&& f )
+{
+    f( "p_w_p", wv.p_w_p );
+    f( "S_p", wv.S_p );
+    f( "dS_dp_p", wv.dS_dp_p );
+    f( "k_rel_p", wv.k_rel_p );
+    f( "n_p", wv.n_p );
+    f( "v_w_p", wv.v_w_p );
+    f( "div_v_w_p", wv.div_v_w_p );
+    f( "p_w_condition_p", wv.p_w_condition_p );
+    f( "inflow_p", wv.inflow_p );
+    f( "p_w_held_p", wv.p_w_held_p );
+    f( "inflow_weight_p", wv.inflow_weight_p );
+}
+
 } // namespace mpm
 
 #endif // MPM_WATER_VIEWS_HPP

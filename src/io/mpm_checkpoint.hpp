@@ -2,7 +2,7 @@
 #define MPM_CHECKPOINT_HPP
 
 #include <io/mpm_snapshot_writer.hpp>
-#include <solver/mpm_stage_state.hpp>
+#include <records/mpm_stage_state.hpp>
 
 #include <cstddef>
 #include <string>

@@ -3,7 +3,7 @@
 
 #include <io/mpm_attribute_digest.hpp>
 #include <io/mpm_hdf5.hpp>
-#include <solver/mpm_stage_state.hpp>
+#include <records/mpm_stage_state.hpp>
 
 #include <hdf5.h>
 

@@ -2,7 +2,7 @@
 #define MPM_PROBE_RECORDER_HPP
 
 #include <io/mpm_case_config.hpp>
-#include <solver/mpm_run_observer.hpp>
+#include <records/mpm_run_records.hpp>
 
 #include <string>
 #include <vector>

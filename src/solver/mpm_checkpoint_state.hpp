@@ -3,9 +3,9 @@
 
 #include <io/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
+#include <records/mpm_stage_state.hpp>
 #include <solver/mpm_simulation.hpp>
 #include <solver/mpm_simulation_error.hpp>
-#include <solver/mpm_stage_state.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -15,50 +15,14 @@
 namespace mpm
 {
 //---------------------------------------------------------------------------//
-// The Views a checkpoint holds: every View of the point and grid structs.
-// A View added to one of these structs must be added here (the test
-// Restart.checkpoint_lists_every_point_view checks the point structs).
+// The Views a checkpoint holds: every View of the point structs
+// (forEachParticleView, forEachWaterParticleView, next to the structs in
+// views/) and of the grid structs. A View added to one of these structs
+// must be added to its list (the test Restart.checkpoint_lists_every_point_view
+// checks the point structs).
 // Grid Views are mostly rebuilt every step, but v_i / dv_i keep their
 // values on nodes that lost their mass and the velocity gradient reads
 // them, so all are kept to make a restart exact.
-
-//! Calls f(name, view) for every View of ParticleViews.
-template <class Views, class F>
-void forEachParticleView( Views& pv, F&& f )
-{
-    f( "x_p", pv.x_p );
-    f( "x0_p", pv.x0_p );
-    f( "v_p", pv.v_p );
-    f( "du_p", pv.du_p );
-    f( "m_p", pv.m_p );
-    f( "vol_p", pv.vol_p );
-    f( "vol0_p", pv.vol0_p );
-    f( "sigma_p", pv.sigma_p );
-    f( "eps_p", pv.eps_p );
-    f( "eps_p_bar_p", pv.eps_p_bar_p );
-    f( "grad_v_p", pv.grad_v_p );
-    f( "material_p", pv.material_p );
-    f( "id_p", pv.id_p );
-    f( "status_p", pv.status_p );
-    f( "load_p", pv.load_p );
-}
-
-//! Calls f(name, view) for every View of WaterParticleViews.
-template <class Views, class F>
-void forEachWaterParticleView( Views& wv, F&& f )
-{
-    f( "p_w_p", wv.p_w_p );
-    f( "S_p", wv.S_p );
-    f( "dS_dp_p", wv.dS_dp_p );
-    f( "k_rel_p", wv.k_rel_p );
-    f( "n_p", wv.n_p );
-    f( "v_w_p", wv.v_w_p );
-    f( "div_v_w_p", wv.div_v_w_p );
-    f( "p_w_condition_p", wv.p_w_condition_p );
-    f( "inflow_p", wv.inflow_p );
-    f( "p_w_held_p", wv.p_w_held_p );
-    f( "inflow_weight_p", wv.inflow_weight_p );
-}
 
 //! Calls f(name, view) for every View of GridViews.
 template <class Views, class F>

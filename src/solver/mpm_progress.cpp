@@ -1,5 +1,7 @@
 #include <solver/mpm_progress.hpp>
 
+#include <records/mpm_point_fields.hpp>
+
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -136,28 +138,14 @@ void ProgressPrinter::summary( const nlohmann::json& metrics ) const
 void writeSnapshot( SnapshotWriter& writer, const RunProgress& progress,
                     const HostSnapshot& snap )
 {
-    std::vector<FieldRef> fields = {
-        { "x", snap.x.data(), 2, "m" },
-        { "displacement", snap.displacement.data(), 2, "m" },
-        { "velocity", snap.v.data(), 2, "m/s" },
-        { "stress", snap.sigma.data(), 4, "Pa" },
-        { "strain", snap.eps.data(), 4, "-" },
-        { "plastic_shear_strain", snap.eps_p_bar.data(), 1, "-" },
-        { "volume", snap.vol.data(), 1, "m^3/m" },
-        { "mass", snap.mass.data(), 1, "kg/m" } };
-    if ( !snap.p_w.empty() )
-    {
-        fields.push_back( { "pore_pressure", snap.p_w.data(), 1, "Pa" } );
-        fields.push_back( { "saturation", snap.S.data(), 1, "-" } );
-        fields.push_back( { "porosity", snap.n.data(), 1, "-" } );
-        fields.push_back( { "water_velocity", snap.v_w.data(), 2, "m/s" } );
-        fields.push_back(
-            { "relative_permeability", snap.k_rel.data(), 1, "-" } );
-    }
-    const std::vector<IntFieldRef> int_fields = {
-        { "material", snap.material.data() },
-        { "id", snap.id.data() },
-        { "status", snap.status.data() } };
+    std::vector<FieldRef> fields;
+    for ( const PointField& f : pointFields() )
+        if ( !f.two_phase || !snap.p_w.empty() )
+            fields.push_back(
+                { f.name, ( snap.*f.values ).data(), f.components, f.unit } );
+    std::vector<IntFieldRef> int_fields;
+    for ( const IntPointField& f : intPointFields() )
+        int_fields.push_back( { f.name, ( snap.*f.values ).data() } );
     writer.write( progress.time_s, progress.stage, progress.stage_time_s,
                   progress.step, snap.num_points, fields, int_fields );
 }

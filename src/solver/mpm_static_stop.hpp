@@ -2,8 +2,8 @@
 #define MPM_STATIC_STOP_HPP
 
 #include <io/mpm_case_config.hpp>
+#include <records/mpm_stage_state.hpp>
 #include <solver/mpm_run_observer.hpp>
-#include <solver/mpm_stage_state.hpp>
 
 #include <mpm_device_type.hpp>
 

@@ -1,35 +1,22 @@
-// Checkpoint / restart: a run stopped and continued from its checkpoint
-// ends in exactly the state of an uninterrupted run (bitwise on Serial);
-// checkpoints of another case are refused; the file is written atomically.
+// Checkpoint / restart of a run: stopped and continued from its checkpoint
+// it ends in exactly the state of an uninterrupted run (bitwise on Serial);
+// a checkpoint of another case is refused.
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
-#include <mpm_test_cli.hpp>
+#include <mpm_test_restart.hpp>
 
-#include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_run_stages.hpp>
 
-#include <hdf5.h>
-
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
-#include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <regex>
-#include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
-
-#include <unistd.h>
 
 namespace
 {
@@ -41,30 +28,7 @@ class Restart : public ::testing::Test
 };
 TYPED_TEST_SUITE( Restart, mpm_test::Backends, mpm_test::BackendName );
 
-//! Per-process scratch folder (other runs of the suite may be running).
-fs::path scratch()
-{
-    return fs::path( ::testing::TempDir() ) /
-           ( "rainslide_restart_" + std::to_string( ::getpid() ) );
-}
-
-//! Removes the scratch folder when the test binary exits.
-const struct ScratchCleanup
-{
-    ~ScratchCleanup()
-    {
-        std::error_code ignored;
-        fs::remove_all( scratch(), ignored );
-    }
-} scratch_cleanup;
-
-fs::path freshDir( const std::string& name )
-{
-    const fs::path dir = scratch() / name;
-    fs::remove_all( dir );
-    fs::create_directories( dir );
-    return dir;
-}
+using namespace mpm_test::restart;
 
 //---------------------------------------------------------------------------//
 /*!
@@ -227,84 +191,6 @@ struct Finished
 };
 
 //---------------------------------------------------------------------------//
-//! Every array of two states: bitwise equal (exact) or within a relative
-//! 1e-10 of the array's largest magnitude.
-void expectSameState( const mpm::Checkpoint& a, const mpm::Checkpoint& b,
-                      const bool exact )
-{
-    EXPECT_EQ( a.step, b.step );
-    EXPECT_EQ( a.num_removed, b.num_removed );
-    if ( exact )
-        EXPECT_EQ( a.time_s, b.time_s );
-    else
-        EXPECT_NEAR( a.time_s, b.time_s, 1.0e-10 * a.time_s );
-    ASSERT_EQ( a.arrays.size(), b.arrays.size() );
-    for ( std::size_t k = 0; k < a.arrays.size(); ++k )
-    {
-        const mpm::CheckpointArray& x = a.arrays[k];
-        const mpm::CheckpointArray& y = b.arrays[k];
-        ASSERT_EQ( x.name, y.name );
-        ASSERT_EQ( x.dims, y.dims ) << x.name;
-        EXPECT_EQ( x.integers, y.integers ) << x.name;
-        ASSERT_EQ( x.reals.size(), y.reals.size() ) << x.name;
-        double scale = 0.0;
-        for ( const double v : x.reals )
-            scale = std::max( scale, std::abs( v ) );
-        std::size_t differing = 0, first = 0;
-        for ( std::size_t i = 0; i < x.reals.size(); ++i )
-        {
-            const bool same =
-                exact ? std::memcmp( &x.reals[i], &y.reals[i],
-                                     sizeof( double ) ) == 0
-                      : std::abs( x.reals[i] - y.reals[i] ) <= 1.0e-10 * scale;
-            if ( !same && differing++ == 0 )
-                first = i;
-        }
-        EXPECT_EQ( differing, 0u )
-            << x.name << ": " << differing << " of " << x.reals.size()
-            << " values differ, first [" << first
-            << "]: " << ( x.reals.empty() ? 0.0 : x.reals[first] ) << " vs "
-            << ( y.reals.empty() ? 0.0 : y.reals[first] );
-    }
-}
-
-//! Run summaries: equal counts, times equal (exact) or within 1e-10.
-void expectSameSummary( const mpm::RunSummary& a, const mpm::RunSummary& b,
-                        const bool exact )
-{
-    const auto near = [&]( const double x, const double y, const char* what )
-    {
-        if ( exact )
-            EXPECT_EQ( x, y ) << what;
-        else
-            EXPECT_NEAR( x, y, 1.0e-10 * std::abs( x ) ) << what;
-    };
-    EXPECT_EQ( a.steps, b.steps );
-    EXPECT_EQ( a.interrupted, b.interrupted );
-    near( a.dt_min_s, b.dt_min_s, "dt_min_s" );
-    near( a.dt_max_s, b.dt_max_s, "dt_max_s" );
-    ASSERT_EQ( a.stages.size(), b.stages.size() );
-    for ( std::size_t s = 0; s < a.stages.size(); ++s )
-    {
-        EXPECT_EQ( a.stages[s].name, b.stages[s].name );
-        EXPECT_EQ( a.stages[s].steps, b.stages[s].steps );
-        EXPECT_EQ( a.stages[s].converged, b.stages[s].converged );
-        near( a.stages[s].duration_s, b.stages[s].duration_s, "duration_s" );
-        near( a.stages[s].ke_ratio, b.stages[s].ke_ratio, "ke_ratio" );
-    }
-}
-
-//! Step and time of the snapshots of `all` from index `from` on.
-std::vector<std::pair<long, double>>
-marks( const std::vector<mpm::RunProgress>& all, const std::size_t from )
-{
-    std::vector<std::pair<long, double>> out;
-    for ( std::size_t k = from; k < all.size(); ++k )
-        out.emplace_back( all[k].step, all[k].time_s );
-    return out;
-}
-
-//---------------------------------------------------------------------------//
 // The checkpoint names every View of the point structs (a View added to
 // them must be added to forEachParticleView / forEachWaterParticleView).
 TYPED_TEST( Restart, checkpoint_lists_every_point_view )
@@ -317,12 +203,12 @@ TYPED_TEST( Restart, checkpoint_lists_every_point_view )
     mpm::forEachParticleView( pv, add );
     EXPECT_EQ( bytes, sizeof( pv ) )
         << "a View of ParticleViews is missing in forEachParticleView "
-           "(src/solver/mpm_checkpoint_state.hpp)";
+           "(views/mpm_particle_views.hpp)";
     bytes = 0;
     mpm::forEachWaterParticleView( wv, add );
     EXPECT_EQ( bytes, sizeof( wv ) )
         << "a View of WaterParticleViews is missing in "
-           "forEachWaterParticleView (src/solver/mpm_checkpoint_state.hpp)";
+           "forEachWaterParticleView (views/mpm_water_views.hpp)";
 }
 
 //---------------------------------------------------------------------------//
@@ -480,125 +366,6 @@ TYPED_TEST( Restart, stage_conditions_come_from_the_checkpoint )
 }
 
 //---------------------------------------------------------------------------//
-//! Every field of a loop state as text (doubles in hex: exact).
-std::vector<std::string> loopFields( const mpm::StageLoopState& state )
-{
-    std::vector<std::string> out;
-    const auto text = [&]( const std::string& name, const auto& value )
-    {
-        using T = std::decay_t<decltype( value )>;
-        std::ostringstream line;
-        line << name << " = ";
-        if constexpr ( std::is_same_v<T, double> )
-            line << std::hexfloat << value;
-        else
-            line << value;
-        out.push_back( line.str() );
-    };
-    mpm::visitStageLoopState(
-        state,
-        [&]( const std::string& name, const auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<mpm::StageSummary>> )
-            {
-                for ( std::size_t k = 0; k < value.size(); ++k )
-                    mpm::visitStageSummary(
-                        value[k], [&]( const std::string& field, const auto& v )
-                        { text( name + std::to_string( k ) + field, v ); } );
-            }
-            else
-                text( name, value );
-        } );
-    return out;
-}
-
-// Every field of the loop state survives the file, with distinct values.
-TEST( RestartFile, loop_state_round_trips )
-{
-    mpm::StageLoopState state;
-    int k = 0;
-    const auto fill = [&]( auto& value )
-    {
-        using T = std::decay_t<decltype( value )>;
-        ++k;
-        if constexpr ( std::is_same_v<T, double> )
-            value = 1.0 / 3.0 + k;
-        else if constexpr ( std::is_same_v<T, std::string> )
-            value = "text " + std::to_string( k );
-        else if constexpr ( std::is_same_v<T, bool> )
-            value = k % 2 == 0;
-        else
-            value = static_cast<T>( 1000 + k );
-    };
-    mpm::visitStageLoopState(
-        state,
-        [&]( const std::string&, auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<mpm::StageSummary>> )
-            {
-                value.resize( 2 );
-                for ( auto& summary : value )
-                    mpm::visitStageSummary( summary,
-                                            [&]( const std::string&, auto& v )
-                                            { fill( v ); } );
-            }
-            else
-                fill( value );
-        } );
-    mpm::Checkpoint checkpoint;
-    checkpoint.loop = state;
-    checkpoint.identity.case_fingerprint = "a = 1\n";
-    checkpoint.load_groups = { { 0, 2 }, { 1 } };
-    checkpoint.load_counts = { 3, 4, 5 };
-    checkpoint.snapshots = { 7, 123, 0.25 };
-    const fs::path file = freshDir( "round_trip" ) / "checkpoint.h5";
-    mpm::writeCheckpoint( file.string(), checkpoint );
-    const mpm::Checkpoint read = mpm::readCheckpoint( file.string() );
-    EXPECT_EQ( loopFields( read.loop ), loopFields( state ) );
-    EXPECT_EQ( read.load_groups, checkpoint.load_groups );
-    EXPECT_EQ( read.load_counts, checkpoint.load_counts );
-    EXPECT_EQ( read.identity.case_fingerprint, "a = 1\n" );
-    EXPECT_EQ( read.snapshots.count, 7 );
-    EXPECT_EQ( read.snapshots.last_step, 123 );
-}
-
-//---------------------------------------------------------------------------//
-// Writing goes through <file>.partial + rename: a failed write leaves the
-// previous checkpoint intact and readable.
-TEST( RestartFile, failed_write_keeps_the_previous_checkpoint )
-{
-    const fs::path dir = freshDir( "atomic" );
-    const std::string file = ( dir / "checkpoint.h5" ).string();
-    mpm::Checkpoint first;
-    first.step = 11;
-    mpm::writeCheckpoint( file, first );
-    EXPECT_FALSE( fs::exists( file + ".partial" ) );
-    // A folder in the way of the temporary file makes the next write fail.
-    fs::create_directory( file + ".partial" );
-    mpm::Checkpoint second;
-    second.step = 22;
-    EXPECT_THROW( mpm::writeCheckpoint( file, second ), std::runtime_error );
-    EXPECT_EQ( mpm::readCheckpoint( file ).step, 11 );
-    fs::remove( file + ".partial" );
-    mpm::writeCheckpoint( file, second );
-    EXPECT_EQ( mpm::readCheckpoint( file ).step, 22 );
-    // Not a checkpoint: refused with the file's name.
-    std::ofstream( dir / "other.h5" ) << "not hdf5";
-    try
-    {
-        mpm::readCheckpoint( ( dir / "other.h5" ).string() );
-        ADD_FAILURE() << "no error";
-    }
-    catch ( const std::runtime_error& e )
-    {
-        EXPECT_NE( std::string( e.what() ).find( "other.h5" ),
-                   std::string::npos );
-    }
-}
-
-//---------------------------------------------------------------------------//
 // A checkpoint of another case is refused, naming what differs.
 TYPED_TEST( Restart, checkpoint_of_another_case_is_refused )
 {
@@ -618,252 +385,6 @@ TYPED_TEST( Restart, checkpoint_of_another_case_is_refused )
             "number of material points: 64 in the checkpoint" } )
         EXPECT_NE( why.find( fragment ), std::string::npos ) << fragment << "\n"
                                                              << why;
-}
-
-//! The test block (mpm_test::blockCaseText) with two dynamic stages, the
-//! first `duration_s` long.
-std::string blockCase( const std::string& solver_extra,
-                       const double duration_s = 0.2 )
-{
-    return mpm_test::blockCaseText( solver_extra, R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = )" + std::to_string( duration_s ) +
-                                                      R"(
-snapshot_interval_s = 0.05
-[[stages]]
-name = "more"
-type = "dynamic"
-duration_s = 0.1
-snapshot_interval_s = 0.05
-)" );
-}
-
-// The case's keys identify it: a changed value is refused and named; a
-// changed checkpoint interval, comment or layout is not a change.
-TEST( RestartFile, changed_case_file_is_refused_with_the_key )
-{
-    const auto original = mpm::parseCase(
-        blockCase( "courant_number = 0.5\ncheckpoint_interval_s = 0.1" ),
-        "block.toml" );
-    const auto reformatted = mpm::parseCase(
-        "# a comment\n" +
-            blockCase( "checkpoint_interval_s = 0.3\ncourant_number = 0.50" ),
-        "block.toml" );
-    const auto changed = mpm::parseCase(
-        blockCase( "courant_number = 0.4", 0.25 ), "block_v2.toml" );
-    EXPECT_EQ( original.fingerprint, reformatted.fingerprint );
-    EXPECT_NE( original.fingerprint.find( "stages[1].name = 'more'" ),
-               std::string::npos )
-        << original.fingerprint;
-
-    mpm::Checkpoint checkpoint;
-    checkpoint.identity.case_name = original.name;
-    checkpoint.identity.case_file = original.file;
-    checkpoint.identity.case_fingerprint = original.fingerprint;
-    auto now = checkpoint.identity;
-    EXPECT_EQ( mpm::checkpointMismatch( checkpoint, "c.h5", now ), "" );
-    now.case_fingerprint = reformatted.fingerprint;
-    EXPECT_EQ( mpm::checkpointMismatch( checkpoint, "c.h5", now ), "" );
-    now.case_file = changed.file;
-    now.case_fingerprint = changed.fingerprint;
-    const std::string why = mpm::checkpointMismatch( checkpoint, "c.h5", now );
-    for ( const char* fragment :
-          { "c.h5", "block.toml", "block_v2.toml",
-            "solver.courant_number: 0.5 in the checkpoint, 0.4 now",
-            "stages[0].duration_s: 0.2 in the checkpoint, 0.25 now" } )
-        EXPECT_NE( why.find( fragment ), std::string::npos ) << fragment << "\n"
-                                                             << why;
-}
-
-//---------------------------------------------------------------------------//
-// The CLI: `run --stop-after-steps` stops like Ctrl-C (checkpoint, exit
-// 130, how to resume); `run --restart` continues; the particle file, its
-// XDMF and the metrics equal those of an uninterrupted run.
-using mpm_test::CommandResult;
-
-CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runRainslide( args, scratch() / "cli.log" );
-}
-
-std::string readText( const fs::path& file )
-{
-    std::ifstream in( file );
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-//! Every snapshot of a particle file: "<group>@<attr>" and "<dataset>"
-//! -> raw bytes.
-std::map<std::string, std::string> snapshotBytes( const fs::path& h5 )
-{
-    std::map<std::string, std::string> out;
-    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
-    if ( file < 0 )
-        return out;
-    struct Visit
-    {
-        hid_t file;
-        std::map<std::string, std::string>* out;
-    } visit{ file, &out };
-    const H5O_iterate_t collect = []( hid_t, const char* name,
-                                      const H5O_info_t* info,
-                                      void* data ) -> herr_t
-    {
-        auto& v = *static_cast<Visit*>( data );
-        const std::string path = std::string( "/snapshots/" ) + name;
-        if ( info->type == H5O_TYPE_DATASET )
-        {
-            const hid_t dset = H5Dopen2( v.file, path.c_str(), H5P_DEFAULT );
-            const hid_t type = H5Dget_type( dset );
-            const hid_t space = H5Dget_space( dset );
-            std::string bytes( H5Sget_simple_extent_npoints( space ) *
-                                   H5Tget_size( type ),
-                               '\0' );
-            if ( !bytes.empty() )
-                H5Dread( dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                         bytes.data() );
-            ( *v.out )[path] = bytes;
-            H5Sclose( space );
-            H5Tclose( type );
-            H5Dclose( dset );
-        }
-        else if ( info->type == H5O_TYPE_GROUP )
-            for ( const char* attr :
-                  { "time_s", "stage", "stage_time_s", "step", "n_points" } )
-            {
-                if ( H5Aexists_by_name( v.file, path.c_str(), attr,
-                                        H5P_DEFAULT ) <= 0 )
-                    continue;
-                const hid_t a = H5Aopen_by_name( v.file, path.c_str(), attr,
-                                                 H5P_DEFAULT, H5P_DEFAULT );
-                const hid_t type = H5Aget_type( a );
-                std::string bytes( H5Tget_size( type ), '\0' );
-                H5Aread( a, type, bytes.data() );
-                ( *v.out )[path + "@" + attr] = bytes;
-                H5Tclose( type );
-                H5Aclose( a );
-            }
-        return 0;
-    };
-    const hid_t group = H5Gopen2( file, "/snapshots", H5P_DEFAULT );
-    H5Ovisit( group, H5_INDEX_NAME, H5_ITER_INC, collect, &visit );
-    H5Gclose( group );
-    H5Fclose( file );
-    return out;
-}
-
-void expectSameOutputs( const fs::path& full, const fs::path& resumed )
-{
-    const auto a = snapshotBytes( full / "particles.h5" );
-    const auto b = snapshotBytes( resumed / "particles.h5" );
-    EXPECT_GT( a.size(), 50u );
-    EXPECT_EQ( a.size(), b.size() );
-    for ( const auto& [key, bytes] : a )
-    {
-        const auto it = b.find( key );
-        ASSERT_NE( it, b.end() ) << key;
-        EXPECT_TRUE( it->second == bytes ) << key;
-    }
-    EXPECT_EQ( readText( full / "particles.xdmf" ),
-               readText( resumed / "particles.xdmf" ) );
-    EXPECT_FALSE( fs::exists( resumed / "particles.h5.partial" ) );
-    const auto m_full =
-        nlohmann::json::parse( readText( full / "metrics.json" ) );
-    const auto m =
-        nlohmann::json::parse( readText( resumed / "metrics.json" ) );
-    for ( const char* key : { "status", "steps", "simulated_time_s", "stages",
-                              "deformation", "dt_s", "dt_min_s" } )
-        EXPECT_EQ( m_full[key], m[key] ) << key;
-    EXPECT_EQ( m_full["output"]["snapshots"], m["output"]["snapshots"] );
-    EXPECT_TRUE( m.contains( "restart" ) );
-    EXPECT_GT( m["wall_s"].get<double>(),
-               m["restart"]["wall_s_this_session"].get<double>() );
-}
-
-TEST( RestartCli, stop_and_restart_give_the_uninterrupted_outputs )
-{
-    const fs::path dir = freshDir( "cli" );
-    const fs::path case_file = dir / "block.toml";
-    std::ofstream( case_file ) << blockCase( "checkpoint_interval_s = 0.03" );
-    const std::string run =
-        "run " + case_file.string() + " --backend serial --quiet --out ";
-
-    ASSERT_EQ( runCommand( run + ( dir / "full" ).string() ).exit_code, 0 );
-
-    // Stopped in the first stage: exit 130, a checkpoint, how to go on.
-    const fs::path part = dir / "part";
-    auto stopped = runCommand( run + part.string() + " --stop-after-steps 30" );
-    EXPECT_EQ( stopped.exit_code, 130 ) << stopped.output;
-    EXPECT_NE( stopped.output.find( "checkpoint at step 30" ),
-               std::string::npos )
-        << stopped.output;
-    EXPECT_NE( stopped.output.find( "--restart " +
-                                    ( part / "checkpoint.h5" ).string() ),
-               std::string::npos )
-        << stopped.output;
-    EXPECT_EQ(
-        nlohmann::json::parse( readText( part / "metrics.json" ) )["status"],
-        "interrupted" );
-    const fs::path copy = dir / "copy";
-    fs::copy( part, copy );
-
-    // Continued in place (--out defaults to the checkpoint's folder).
-    auto resumed = runCommand( "run " + case_file.string() +
-                               " --backend serial --quiet --restart " +
-                               ( part / "checkpoint.h5" ).string() );
-    ASSERT_EQ( resumed.exit_code, 0 ) << resumed.output;
-    expectSameOutputs( dir / "full", part );
-
-    // Continued into another folder, after a "crash" that left the
-    // particle file as .partial (with a snapshot after the checkpoint).
-    fs::rename( copy / "particles.h5", copy / "particles.h5.partial" );
-    resumed = runCommand( "run " + case_file.string() +
-                          " --backend serial --quiet --restart " +
-                          ( copy / "checkpoint.h5" ).string() + " --out " +
-                          ( dir / "elsewhere" ).string() );
-    ASSERT_EQ( resumed.exit_code, 0 ) << resumed.output;
-    expectSameOutputs( dir / "full", dir / "elsewhere" );
-}
-
-TEST( RestartCli, changed_case_or_missing_snapshots_are_refused )
-{
-    const fs::path dir = freshDir( "cli_refused" );
-    const fs::path case_file = dir / "block.toml";
-    std::ofstream( case_file ) << blockCase( "" );
-    const fs::path part = dir / "part";
-    ASSERT_EQ( runCommand( "run " + case_file.string() +
-                           " --backend serial --quiet --stop-after-steps 20 "
-                           "--out " +
-                           part.string() )
-                   .exit_code,
-               130 );
-    const std::string before = readText( part / "metrics.json" );
-
-    const fs::path changed = dir / "changed.toml";
-    std::ofstream( changed ) << blockCase( "", 0.3 );
-    auto result =
-        runCommand( "run " + changed.string() + " --backend serial --restart " +
-                    ( part / "checkpoint.h5" ).string() );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE(
-        result.output.find( "stages[0].duration_s: 0.2 in the checkpoint, 0.3 "
-                            "now" ),
-        std::string::npos )
-        << result.output;
-    EXPECT_EQ( readText( part / "metrics.json" ), before );
-
-    fs::remove( part / "particles.h5" );
-    result = runCommand( "run " + case_file.string() +
-                         " --backend serial --restart " +
-                         ( part / "checkpoint.h5" ).string() );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE( result.output.find( "particles.h5: does not exist" ),
-               std::string::npos )
-        << result.output;
 }
 
 } // namespace

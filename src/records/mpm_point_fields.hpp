@@ -1,0 +1,95 @@
+#ifndef MPM_POINT_FIELDS_HPP
+#define MPM_POINT_FIELDS_HPP
+
+#include <records/mpm_run_records.hpp>
+
+#include <cstring>
+#include <vector>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief The point fields of the output, declared once: their name in
+  particles.h5 (and the probes' and scripts' vocabulary), unit, components,
+  the HostSnapshot member that holds them and the View they copy (its name
+  in forEachParticleView / forEachWaterParticleView; null for a derived
+  field). hostSnapshot fills the members from the Views, writeSnapshot
+  writes them, the test PointFields.* checks the names against the Views.
+*/
+struct PointField
+{
+    const char* name; //!< in particles.h5
+    const char* unit;
+    int components;
+    std::vector<double> HostSnapshot::*values;
+    const char* view; //!< the View copied, null if derived
+    bool two_phase;   //!< only in two-phase scenes
+};
+
+//! An integer point field (unit "1").
+struct IntPointField
+{
+    const char* name;
+    std::vector<int> HostSnapshot::*values;
+    const char* view;
+};
+
+//! The double fields, in the order particles.h5 stores them.
+inline const std::vector<PointField>& pointFields()
+{
+    using H = HostSnapshot;
+    static const std::vector<PointField> fields = {
+        { "x", "m", 2, &H::x, "x_p", false },
+        { "displacement", "m", 2, &H::displacement, nullptr, false },
+        { "velocity", "m/s", 2, &H::v, "v_p", false },
+        { "stress", "Pa", 4, &H::sigma, "sigma_p", false },
+        { "strain", "-", 4, &H::eps, "eps_p", false },
+        { "plastic_shear_strain", "-", 1, &H::eps_p_bar, "eps_p_bar_p", false },
+        { "volume", "m^3/m", 1, &H::vol, "vol_p", false },
+        { "mass", "kg/m", 1, &H::mass, "m_p", false },
+        { "pore_pressure", "Pa", 1, &H::p_w, "p_w_p", true },
+        { "saturation", "-", 1, &H::S, "S_p", true },
+        { "porosity", "-", 1, &H::n, "n_p", true },
+        { "water_velocity", "m/s", 2, &H::v_w, "v_w_p", true },
+        { "relative_permeability", "-", 1, &H::k_rel, "k_rel_p", true } };
+    return fields;
+}
+
+//! The integer fields, in the order particles.h5 stores them.
+inline const std::vector<IntPointField>& intPointFields()
+{
+    using H = HostSnapshot;
+    static const std::vector<IntPointField> fields = {
+        { "material", &H::material, "material_p" },
+        { "id", &H::id, "id_p" },
+        { "status", &H::status, "status_p" } };
+    return fields;
+}
+
+//! The HostSnapshot member that holds a copy of View `view`, or null.
+template <class T>
+std::vector<T> HostSnapshot::*snapshotMemberOf( const char* view );
+
+template <>
+inline std::vector<double> HostSnapshot::*
+snapshotMemberOf<double>( const char* view )
+{
+    for ( const PointField& f : pointFields() )
+        if ( f.view && std::strcmp( f.view, view ) == 0 )
+            return f.values;
+    return nullptr;
+}
+
+template <>
+inline std::vector<int> HostSnapshot::*snapshotMemberOf<int>( const char* view )
+{
+    for ( const IntPointField& f : intPointFields() )
+        if ( std::strcmp( f.view, view ) == 0 )
+            return f.values;
+    return nullptr;
+}
+
+} // namespace mpm
+
+#endif // MPM_POINT_FIELDS_HPP
