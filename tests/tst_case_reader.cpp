@@ -1,14 +1,13 @@
+// The case reader: valid cases in full, defaults, errors, bad case files.
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_case_reader.hpp>
 #include <mpm_test_minimal_case.hpp>
-#include <setup/mpm_geometry.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,103 +18,6 @@
 namespace
 {
 using mpm::Point2;
-namespace geo = mpm::geometry;
-
-const std::vector<Point2> unit_square = {
-    { 0.0, 0.0 }, { 1.0, 0.0 }, { 1.0, 1.0 }, { 0.0, 1.0 } };
-
-// L-shape: the 2 x 2 square minus its upper-right quarter (area 3).
-const std::vector<Point2> l_shape = { { 0.0, 0.0 }, { 2.0, 0.0 },
-                                      { 2.0, 1.0 }, { 1.0, 1.0 },
-                                      { 1.0, 2.0 }, { 0.0, 2.0 } };
-
-//---------------------------------------------------------------------------//
-// Geometry.
-//---------------------------------------------------------------------------//
-TEST( Geometry, point_in_square_either_orientation )
-{
-    std::vector<Point2> clockwise( unit_square.rbegin(), unit_square.rend() );
-    for ( const auto& polygon : { unit_square, clockwise } )
-    {
-        EXPECT_TRUE( geo::pointInPolygon( polygon, { 0.5, 0.5 } ) );
-        EXPECT_TRUE( geo::pointInPolygon( polygon, { 0.01, 0.99 } ) );
-        EXPECT_FALSE( geo::pointInPolygon( polygon, { 1.5, 0.5 } ) );
-        EXPECT_FALSE( geo::pointInPolygon( polygon, { 0.5, -0.1 } ) );
-        EXPECT_FALSE( geo::pointInPolygon( polygon, { -3.0, 0.5 } ) );
-    }
-}
-
-TEST( Geometry, repeated_closing_vertex_is_ignored )
-{
-    auto closed = unit_square;
-    closed.push_back( closed.front() );
-    EXPECT_TRUE( geo::pointInPolygon( closed, { 0.5, 0.5 } ) );
-    EXPECT_FALSE( geo::pointInPolygon( closed, { 1.5, 0.5 } ) );
-    EXPECT_DOUBLE_EQ( geo::polygonArea( closed ), 1.0 );
-    int a = -1, b = -1;
-    EXPECT_FALSE( geo::findSelfIntersection( closed, a, b ) );
-}
-
-TEST( Geometry, concave_l_shape )
-{
-    EXPECT_TRUE( geo::pointInPolygon( l_shape, { 0.5, 1.5 } ) );
-    EXPECT_TRUE( geo::pointInPolygon( l_shape, { 1.5, 0.5 } ) );
-    EXPECT_FALSE( geo::pointInPolygon( l_shape, { 1.5, 1.5 } ) ); // notch
-    EXPECT_DOUBLE_EQ( geo::polygonArea( l_shape ), 3.0 );
-    std::vector<Point2> clockwise( l_shape.rbegin(), l_shape.rend() );
-    EXPECT_DOUBLE_EQ( geo::polygonArea( clockwise ), 3.0 );
-    int a = -1, b = -1;
-    EXPECT_FALSE( geo::findSelfIntersection( l_shape, a, b ) );
-    EXPECT_FALSE( geo::findSelfIntersection( clockwise, a, b ) );
-}
-
-TEST( Geometry, bow_tie_intersects_itself )
-{
-    const std::vector<Point2> bow_tie = {
-        { 0.0, 0.0 }, { 1.0, 1.0 }, { 1.0, 0.0 }, { 0.0, 1.0 } };
-    int a = -1, b = -1;
-    ASSERT_TRUE( geo::findSelfIntersection( bow_tie, a, b ) );
-    EXPECT_EQ( a, 0 );
-    EXPECT_EQ( b, 2 );
-    // Even-odd rule: both lobes are inside, the gap between them is not.
-    EXPECT_TRUE( geo::pointInPolygon( bow_tie, { 0.1, 0.5 } ) );
-    EXPECT_FALSE( geo::pointInPolygon( bow_tie, { 0.5, 0.9 } ) );
-}
-
-TEST( Geometry, touching_and_folding_edges_count_as_intersection )
-{
-    int a = -1, b = -1;
-    // Vertex 3 touches edge 0 (non-adjacent edges touch).
-    const std::vector<Point2> touching = {
-        { 0.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 2.0 }, { 1.0, 0.0 }, { 0.0, 2.0 } };
-    ASSERT_TRUE( geo::findSelfIntersection( touching, a, b ) );
-    EXPECT_EQ( a, 0 );
-    EXPECT_EQ( b, 2 );
-    // Edge 1 runs back over edge 0 (adjacent, collinear overlap).
-    const std::vector<Point2> fold = {
-        { 0.0, 0.0 }, { 2.0, 0.0 }, { 1.0, 0.0 }, { 1.0, 1.0 } };
-    ASSERT_TRUE( geo::findSelfIntersection( fold, a, b ) );
-    EXPECT_EQ( a, 0 );
-    EXPECT_EQ( b, 1 );
-    // Collinear but not folding back: a straight vertex is fine.
-    const std::vector<Point2> straight = {
-        { 0.0, 0.0 }, { 1.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 1.0 } };
-    EXPECT_FALSE( geo::findSelfIntersection( straight, a, b ) );
-}
-
-TEST( Geometry, polyline_interpolation_and_extrapolation )
-{
-    const std::vector<Point2> line = {
-        { 0.0, 1.0 }, { 10.0, 2.0 }, { 20.0, 0.0 } };
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, 5.0 ), 1.5 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, 10.0 ), 2.0 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, 15.0 ), 1.0 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, 0.0 ), 1.0 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, -4.0 ), 1.0 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( line, 25.0 ), 0.0 );
-    EXPECT_DOUBLE_EQ( geo::polylineY( { { 3.0, 7.0 } }, 1.0 ), 7.0 );
-    EXPECT_THROW( geo::polylineY( {}, 1.0 ), std::invalid_argument );
-}
 
 //---------------------------------------------------------------------------//
 // Case reader: a valid case.
@@ -337,6 +239,7 @@ TEST( CaseReader, reads_good_two_phase_case )
 
 //---------------------------------------------------------------------------//
 using mpm_test::minimal_case;
+using namespace mpm_test::case_reader;
 
 TEST( CaseReader, defaults_of_a_minimal_case )
 {
@@ -380,35 +283,6 @@ TEST( CaseReader, reports_every_error_in_file_order )
 //---------------------------------------------------------------------------//
 // Two-phase variants of the minimal case.
 //---------------------------------------------------------------------------//
-// The minimal case as a two-phase analysis; retention is appended to the
-// material table (unsaturated analyses).
-std::string twoPhaseCase( const std::string& analysis,
-                          const std::string& retention = "" )
-{
-    std::string text = minimal_case;
-    text.replace( text.find( "[grid]" ), 0,
-                  "analysis = \"" + analysis + "\"\n" );
-    text.replace( text.find( "density_kg_per_m3 = 2000.0" ), 26,
-                  "solid_density_kg_per_m3 = 2650.0\nporosity = 0.4\n"
-                  "permeability_m2 = 1.0e-12" );
-    text.replace( text.find( "[[bodies]]" ), 0, retention );
-    return text;
-}
-
-//! The error lines of an invalid case ("" if it is valid).
-std::string errorsOf( const std::string& text )
-{
-    try
-    {
-        mpm::parseCase( text, "x.toml" );
-    }
-    catch ( const mpm::CaseError& e )
-    {
-        return e.what();
-    }
-    return "";
-}
-
 TEST( CaseReader, dry_case_leaves_two_phase_members_at_defaults )
 {
     const mpm::CaseConfig c = mpm::parseCase( minimal_case, "minimal.toml" );
@@ -539,17 +413,6 @@ TEST( CaseReader, missing_file_is_reported )
 //   # expect: <fragment of the first error line>
 //   # expect-line: <line of the first error>
 //---------------------------------------------------------------------------//
-std::string headerValue( const std::string& file, const std::string& tag )
-{
-    std::ifstream in( file );
-    std::string line;
-    const std::string prefix = "# " + tag + ": ";
-    while ( std::getline( in, line ) && line.rfind( "#", 0 ) == 0 )
-        if ( line.rfind( prefix, 0 ) == 0 )
-            return line.substr( prefix.size() );
-    return "";
-}
-
 TEST( CaseReader, rejects_every_bad_case )
 {
     std::vector<std::string> files;

@@ -1,17 +1,17 @@
-#include <io/mpm_json_output.hpp>
+// The particle file writer: HDF5 round trip and XDMF, the partial file
+// after a kill, finalization, errors naming the path, output safety.
 #include <io/mpm_snapshot_writer.hpp>
+#include <mpm_test_temp_dir.hpp>
+#include <mpm_test_xml.hpp>
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -25,104 +25,10 @@ namespace
 {
 namespace fs = std::filesystem;
 
-// A fresh folder under the GoogleTest temp dir, removed at scope exit.
-struct TempDir
-{
-    fs::path path;
-    TempDir()
-    {
-        std::string pattern = ::testing::TempDir() + "rainslide_io_XXXXXX";
-        if ( ::mkdtemp( pattern.data() ) == nullptr )
-            throw std::runtime_error( "mkdtemp failed" );
-        path = pattern;
-    }
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::remove_all( path, ec );
-    }
-};
-
-std::vector<std::string> listDir( const fs::path& dir )
-{
-    std::vector<std::string> names;
-    for ( const auto& entry : fs::directory_iterator( dir ) )
-        names.push_back( entry.path().filename().string() );
-    return names;
-}
-
-//---------------------------------------------------------------------------//
-// Minimal XML tree, enough to check well-formedness and read the XDMF.
-struct XmlNode
-{
-    std::string tag;
-    std::map<std::string, std::string> attrs;
-    std::string text;
-    std::vector<XmlNode> children;
-};
-
-std::string xmlUnescape( std::string t )
-{
-    const char* const entities[][2] = { { "&lt;", "<" },
-                                        { "&gt;", ">" },
-                                        { "&quot;", "\"" },
-                                        { "&apos;", "'" },
-                                        { "&amp;", "&" } };
-    for ( const auto& e : entities )
-        for ( auto p = t.find( e[0] ); p != t.npos; p = t.find( e[0], p + 1 ) )
-            t.replace( p, std::strlen( e[0] ), e[1] );
-    return t;
-}
-
-// Tokenizes tags with a regex and matches them on a stack; throws unless
-// `text` is a single well-formed element (after an optional prolog).
-XmlNode parseXml( const std::string& text )
-{
-    static const std::regex tag(
-        R"re(<\?[^>]*\?>|<!DOCTYPE[^>]*>|<!--[\s\S]*?-->|)re"
-        R"re(<(/?)([A-Za-z_][\w:.-]*)((?:\s+[\w:.-]+="[^"<]*")*)\s*(/?)>)re" );
-    static const std::regex attribute( R"re(([\w:.-]+)="([^"]*)")re" );
-    std::vector<XmlNode> stack( 1 ); // stack[0] holds the root when done
-    std::size_t pos = 0;
-    for ( std::sregex_iterator it( text.begin(), text.end(), tag ), end;
-          it != end; ++it )
-    {
-        const std::smatch& m = *it;
-        const std::string between = text.substr( pos, m.position() - pos );
-        if ( between.find( '<' ) != std::string::npos )
-            throw std::runtime_error( "XML: malformed markup: " + between );
-        stack.back().text += between;
-        pos = m.position() + m.length();
-        if ( m[2].length() == 0 ) // prolog or comment
-            continue;
-        if ( m[1] == "/" )
-        {
-            if ( stack.size() < 2 || stack.back().tag != m[2] )
-                throw std::runtime_error( "XML: unexpected </" + m[2].str() +
-                                          ">" );
-            XmlNode done = std::move( stack.back() );
-            stack.pop_back();
-            done.text = xmlUnescape( done.text );
-            stack.back().children.push_back( std::move( done ) );
-            continue;
-        }
-        XmlNode node{ m[2], {}, "", {} };
-        const std::string attrs = m[3];
-        for ( std::sregex_iterator a( attrs.begin(), attrs.end(), attribute );
-              a != end; ++a )
-            node.attrs[( *a )[1]] = xmlUnescape( ( *a )[2] );
-        if ( m[4] == "/" )
-            stack.back().children.push_back( node );
-        else
-            stack.push_back( node );
-    }
-    const bool blank =
-        ( stack[0].text + text.substr( pos ) ).find_first_not_of( " \t\r\n" ) ==
-        std::string::npos;
-    if ( stack.size() != 1 || stack[0].children.size() != 1 || !blank )
-        throw std::runtime_error( "XML: not one well-formed root element" );
-    return stack[0].children[0];
-}
+using mpm_test::listDir;
+using mpm_test::parseXml;
+using mpm_test::TempDir;
+using mpm_test::XmlNode;
 
 //---------------------------------------------------------------------------//
 // HDF5 read helpers. Reads a whole dataset, its shape and its file type.
@@ -422,35 +328,6 @@ TEST( SnapshotWriter, errors_name_the_path )
 }
 
 //---------------------------------------------------------------------------//
-TEST( JsonOutput, writes_valid_json_atomically )
-{
-    TempDir tmp;
-    const fs::path path = tmp.path / "summary.json";
-    const nlohmann::json value = { { "case", "slope" },
-                                   { "time_s", 1.0 / 3.0 },
-                                   { "stages", { "gravity", "rain" } } };
-    mpm::writeJsonAtomically( path.string(), value );
-    mpm::writeJsonAtomically( path.string(), value ); // replaces
-
-    std::ifstream in( path );
-    EXPECT_EQ( nlohmann::json::parse( in ), value );
-    EXPECT_EQ( listDir( tmp.path ),
-               std::vector<std::string>{ "summary.json" } );
-
-    const std::string bad = ( tmp.path / "missing" / "x.json" ).string();
-    try
-    {
-        mpm::writeJsonAtomically( bad, value );
-        FAIL() << "expected an exception";
-    }
-    catch ( const std::runtime_error& e )
-    {
-        EXPECT_NE( std::string( e.what() ).find( bad ), std::string::npos )
-            << e.what();
-    }
-}
-
-//---------------------------------------------------------------------------//
 // Output safety (issue 12): a symlink planted at a temporary name is
 // removed, never followed; a failed write (disk full) is never published.
 //---------------------------------------------------------------------------//
@@ -472,22 +349,6 @@ TEST( SnapshotWriter, symlink_at_partial_is_not_followed )
     EXPECT_EQ( text, "precious" );
     EXPECT_FALSE( fs::is_symlink( out / "particles.h5" ) );
     EXPECT_TRUE( fs::is_regular_file( out / "particles.h5" ) );
-}
-
-TEST( JsonOutput, symlink_at_temporary_file_is_not_followed )
-{
-    TempDir tmp;
-    const fs::path target = tmp.path / "precious.txt";
-    std::ofstream( target ) << "precious";
-    const fs::path path = tmp.path / "metrics.json";
-    fs::create_symlink( target, path.string() + ".tmp." +
-                                    std::to_string( ::getpid() ) );
-    mpm::writeJsonAtomically( path.string(), { { "status", "completed" } } );
-    std::ifstream in( target );
-    std::string text;
-    std::getline( in, text );
-    EXPECT_EQ( text, "precious" );
-    EXPECT_TRUE( fs::is_regular_file( path ) );
 }
 
 TEST( SnapshotWriter, failed_write_is_never_published )

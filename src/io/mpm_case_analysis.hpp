@@ -58,6 +58,15 @@ inline bool rejectIfDry( TableReader& reader, const std::string& key,
     return true;
 }
 
+/*!
+  \brief Reads the required table [case] of `root` (name, description,
+  analysis) into `config` and returns the analysis: "dry" if [case] or its
+  key is left out, nothing if the key is invalid or misspelt (the checks
+  that depend on it are then skipped).
+*/
+Analysis readCaseTable( TableReader& root, Diagnostics& diag,
+                        CaseConfig& config );
+
 } // namespace Impl
 } // namespace mpm
 

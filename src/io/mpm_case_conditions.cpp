@@ -360,5 +360,44 @@ StaticStop readStaticStop( const toml::table& table, const std::string& path,
     return stop;
 }
 
+//---------------------------------------------------------------------------//
+void readStageTiming( TableReader& r, const std::string& path,
+                      const bool type_known, StageConfig& stage,
+                      Diagnostics& diag )
+{
+    const bool quasi_static = stage.type == StageType::QuasiStatic;
+    stage.gravity_m_per_s2 =
+        r.point( "gravity_m_per_s2", "m/s^2", Need::Optional )
+            .value_or( stage.gravity_m_per_s2 );
+    stage.damping =
+        r.number( "damping", Range::interval( 0.0, false, 1.0, true ), "",
+                  Need::Optional )
+            .value_or( quasi_static ? 0.7 : 0.0 );
+    stage.duration_s =
+        r.number( "duration_s", Range::above( 0.0 ), "s", Need::Required )
+            .value_or( 0.0 );
+    if ( type_known && !quasi_static && r.find( "ke_ratio_tolerance" ) )
+        diag.keyError( *r.find( "ke_ratio_tolerance" ),
+                       path + ".ke_ratio_tolerance",
+                       "only for type \"quasi_static\"; a dynamic "
+                       "stage runs for duration_s" );
+    else
+        stage.ke_ratio_tolerance =
+            r.number( "ke_ratio_tolerance",
+                      Range::interval( 0.0, true, 1.0, true ), "",
+                      Need::Optional )
+                .value_or( stage.ke_ratio_tolerance );
+    if ( const auto* t = r.subTable( "static_stop", Need::Optional ) )
+        stage.static_stop = readStaticStop( *t, path + ".static_stop",
+                                            type_known && quasi_static, diag );
+    stage.snapshot_interval_s =
+        r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
+                  "s (0 = at the stage end only)", Need::Optional )
+            .value_or( 0.0 );
+    stage.snapshot_times_s = readSnapshotTimes( r );
+    stage.reset_displacement =
+        r.boolean( "reset_displacement", Need::Optional ).value_or( false );
+}
+
 } // namespace Impl
 } // namespace mpm

@@ -71,6 +71,15 @@ StaticStop readStaticStop( const toml::table& table, const std::string& path,
 //! stages[k].snapshot_times_s: strictly increasing stage times (s) > 0.
 std::vector<double> readSnapshotTimes( TableReader& r );
 
+/*!
+  \brief The time and motion keys of a stage table `r` at `path` (gravity,
+  damping, duration, kinetic-energy tolerance, static stop, snapshots,
+  displacement reset) into `stage`, whose type is read (`type_known`:
+  without errors).
+*/
+void readStageTiming( TableReader& r, const std::string& path, bool type_known,
+                      StageConfig& stage, Diagnostics& diag );
+
 } // namespace Impl
 } // namespace mpm
 

@@ -9,14 +9,13 @@
 #include <io/mpm_case_pore_pressure.hpp>
 #include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_reader.hpp>
+#include <io/mpm_case_schema.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
 #include <io/mpm_toml_prescan.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <map>
-#include <optional>
 
 namespace mpm
 {
@@ -49,7 +48,7 @@ class CaseParser
                           "bodies", "boundaries", "solver", "stages",
                           "probes" },
                         "the top level of a case file" );
-        parseCaseTable( root );
+        _analysis = Impl::readCaseTable( root, _diag, _config );
         parseWater( root );
         parseGrid( root );
         if ( const auto* t = root.subTable( "particles", Need::Optional ) )
@@ -66,7 +65,12 @@ class CaseParser
                                                 "[[boundaries]]" ) )
             _config.boundaries = Impl::readBoundaries(
                 *arr, "boundaries", _analysis, grid(), _diag );
-        parseSolver( root );
+        if ( const auto* t = root.subTable( "solver", Need::Optional ) )
+        {
+            TableReader r( *t, "solver", _diag );
+            Impl::readConfigKeys( r, Impl::solverKeys(), "[solver]",
+                                  _config.solver );
+        }
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )
             _config.probes = Impl::readProbes( *t, grid(), _diag );
@@ -92,40 +96,6 @@ class CaseParser
         _diag.error( where, text );
     }
 
-    void parseCaseTable( TableReader& root )
-    {
-        const auto* t = root.subTable( "case", Need::Required );
-        if ( !t )
-            return;
-        TableReader r( *t, "case", _diag );
-        const std::vector<std::string> keys = { "name", "description",
-                                                "analysis" };
-        r.checkKeys( keys, "[case]" );
-        if ( const auto name = r.string( "name", Need::Required ) )
-        {
-            const bool valid = std::all_of( name->begin(), name->end(),
-                                            Impl::isBareKeyCharacter );
-            if ( !valid )
-                _diag.mismatch( *r.find( "name" ), "case.name",
-                                "a name of letters, digits, '_' and '-' "
-                                "(it names the output folder)" );
-            _config.name = *name;
-        }
-        _config.description =
-            r.string( "description", Need::Optional, true ).value_or( "" );
-        if ( const auto a =
-                 r.choice( "analysis", Impl::analysisNames(), Need::Optional ) )
-            _analysis = static_cast<AnalysisType>( *a );
-        else if ( r.find( "analysis" ) )
-            _analysis.reset(); // invalid: skip the checks that depend on it
-        else
-            for ( auto&& entry : *t )
-                if ( Impl::closestWord( std::string( entry.first.str() ),
-                                        keys ) == "analysis" )
-                    _analysis.reset(); // misspelt key: as invalid
-        _config.analysis = _analysis.value_or( AnalysisType::Dry );
-    }
-
     void parseWater( TableReader& root )
     {
         const toml::node* node = root.find( "water" );
@@ -140,20 +110,7 @@ class CaseParser
         if ( !t )
             return;
         TableReader r( *t, "water", _diag );
-        r.checkKeys(
-            { "density_kg_per_m3", "bulk_modulus_pa", "viscosity_pa_s" },
-            "[water]" );
-        WaterConfig& w = _config.water;
-        w.density_kg_per_m3 =
-            r.number( "density_kg_per_m3", Range::above( 0.0 ), "kg/m^3",
-                      Need::Optional )
-                .value_or( w.density_kg_per_m3 );
-        w.bulk_modulus_pa = r.number( "bulk_modulus_pa", Range::above( 0.0 ),
-                                      "Pa", Need::Optional )
-                                .value_or( w.bulk_modulus_pa );
-        w.viscosity_pa_s = r.number( "viscosity_pa_s", Range::above( 0.0 ),
-                                     "Pa s", Need::Optional )
-                               .value_or( w.viscosity_pa_s );
+        Impl::readConfigKeys( r, Impl::waterKeys(), "[water]", _config.water );
     }
 
     void parseGrid( TableReader& root )
@@ -293,62 +250,6 @@ class CaseParser
         }
     }
 
-    void parseSolver( TableReader& root )
-    {
-        const auto* t = root.subTable( "solver", Need::Optional );
-        if ( !t )
-            return;
-        TableReader r( *t, "solver", _diag );
-        r.checkKeys( { "courant_number", "dt_s", "flip_fraction", "bbar",
-                       "base_cell_completion", "cell_equilibrium",
-                       "cell_pressure_slope", "retention_table",
-                       "water_relative_flip", "remove_points_leaving_grid",
-                       "instability_speed_factor", "inertia_scaling",
-                       "checkpoint_interval_s" },
-                     "[solver]" );
-        SolverConfig& s = _config.solver;
-        s.courant_number = r.number( "courant_number",
-                                     Range::interval( 0.0, true, 1.0, false ),
-                                     "", Need::Optional )
-                               .value_or( s.courant_number );
-        s.dt_s = r.number( "dt_s", Range::atLeast( 0.0 ), "s (0 = automatic)",
-                           Need::Optional )
-                     .value_or( s.dt_s );
-        s.flip_fraction = r.number( "flip_fraction",
-                                    Range::interval( 0.0, false, 1.0, false ),
-                                    "", Need::Optional )
-                              .value_or( s.flip_fraction );
-        s.bbar = r.boolean( "bbar", Need::Optional ).value_or( s.bbar );
-        s.water_relative_flip =
-            r.boolean( "water_relative_flip", Need::Optional )
-                .value_or( s.water_relative_flip );
-        s.cell_equilibrium = r.boolean( "cell_equilibrium", Need::Optional )
-                                 .value_or( s.cell_equilibrium );
-        s.cell_pressure_slope =
-            r.boolean( "cell_pressure_slope", Need::Optional )
-                .value_or( s.cell_pressure_slope );
-        s.retention_table = r.boolean( "retention_table", Need::Optional )
-                                .value_or( s.retention_table );
-        s.base_cell_completion =
-            r.boolean( "base_cell_completion", Need::Optional )
-                .value_or( s.base_cell_completion );
-        s.remove_points_leaving_grid =
-            r.boolean( "remove_points_leaving_grid", Need::Optional )
-                .value_or( s.remove_points_leaving_grid );
-        s.instability_speed_factor =
-            r.number( "instability_speed_factor", Range::above( 0.0 ), "",
-                      Need::Optional )
-                .value_or( s.instability_speed_factor );
-        s.inertia_scaling = r.number( "inertia_scaling", Range::atLeast( 1.0 ),
-                                      "(inertial mass factor)", Need::Optional )
-                                .value_or( s.inertia_scaling );
-        s.checkpoint_interval_s =
-            r.number( "checkpoint_interval_s", Range::atLeast( 0.0 ),
-                      "s of simulated time (0 = no checkpoints)",
-                      Need::Optional )
-                .value_or( s.checkpoint_interval_s );
-    }
-
     void parseStages( TableReader& root )
     {
         const auto* arr =
@@ -383,39 +284,7 @@ class CaseParser
                                         Need::Required );
             if ( type )
                 stage.type = static_cast<StageType>( *type );
-            const bool quasi_static = stage.type == StageType::QuasiStatic;
-            stage.gravity_m_per_s2 =
-                r.point( "gravity_m_per_s2", "m/s^2", Need::Optional )
-                    .value_or( stage.gravity_m_per_s2 );
-            stage.damping =
-                r.number( "damping", Range::interval( 0.0, false, 1.0, true ),
-                          "", Need::Optional )
-                    .value_or( quasi_static ? 0.7 : 0.0 );
-            stage.duration_s = r.number( "duration_s", Range::above( 0.0 ), "s",
-                                         Need::Required )
-                                   .value_or( 0.0 );
-            if ( type && !quasi_static && r.find( "ke_ratio_tolerance" ) )
-                _diag.keyError( *r.find( "ke_ratio_tolerance" ),
-                                path + ".ke_ratio_tolerance",
-                                "only for type \"quasi_static\"; a dynamic "
-                                "stage runs for duration_s" );
-            else
-                stage.ke_ratio_tolerance =
-                    r.number( "ke_ratio_tolerance",
-                              Range::interval( 0.0, true, 1.0, true ), "",
-                              Need::Optional )
-                        .value_or( stage.ke_ratio_tolerance );
-            if ( const auto* t = r.subTable( "static_stop", Need::Optional ) )
-                stage.static_stop = Impl::readStaticStop(
-                    *t, path + ".static_stop", type && quasi_static, _diag );
-            stage.snapshot_interval_s =
-                r.number( "snapshot_interval_s", Range::atLeast( 0.0 ),
-                          "s (0 = at the stage end only)", Need::Optional )
-                    .value_or( 0.0 );
-            stage.snapshot_times_s = Impl::readSnapshotTimes( r );
-            stage.reset_displacement =
-                r.boolean( "reset_displacement", Need::Optional )
-                    .value_or( false );
+            Impl::readStageTiming( r, path, type.has_value(), stage, _diag );
             stage.materials = _config.materials;
             if ( const auto* t = r.subTable( "materials", Need::Optional ) )
                 parseOverrides( *t, path + ".materials", stage );

@@ -2,17 +2,16 @@
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_safe_file.hpp>
 #include <io/mpm_snapshot_writer.hpp>
+#include <io/mpm_xdmf.hpp>
 
 #include <hdf5.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -89,80 +88,6 @@ void checkFields( const int n_points, const std::vector<FieldRef>& fields,
             where +
             "positions must be a double field \"x\" with 2 components" );
 }
-
-//---------------------------------------------------------------------------//
-std::string xmlEscape( const std::string& text )
-{
-    const std::string special = "&<>\"'";
-    const char* const entities[] = { "&amp;", "&lt;", "&gt;", "&quot;",
-                                     "&apos;" };
-    std::string out;
-    for ( const char c : text )
-    {
-        const auto k = special.find( c );
-        out += k == std::string::npos ? std::string( 1, c ) : entities[k];
-    }
-    return out;
-}
-
-// Replaces each @key@ in `text` in one pass (values are not rescanned).
-std::string fill( const std::string& text,
-                  const std::map<std::string, std::string>& values )
-{
-    std::string out;
-    std::size_t i = 0;
-    for ( std::size_t at; ( at = text.find( '@', i ) ) != std::string::npos; )
-    {
-        const std::size_t end = text.find( '@', at + 1 );
-        out += text.substr( i, at - i ) +
-               values.at( text.substr( at + 1, end - at - 1 ) );
-        i = end + 1;
-    }
-    return out + text.substr( i );
-}
-
-// Shortest decimal text that reads back as the same double.
-std::string formatDouble( const double value )
-{
-    char buffer[64];
-    return std::string( buffer,
-                        std::to_chars( buffer, buffer + 64, value ).ptr );
-}
-
-std::string snapshotName( const std::size_t index )
-{
-    char buffer[32];
-    std::snprintf( buffer, sizeof( buffer ), "%06zu", index );
-    return buffer;
-}
-
-// XDMF text of one snapshot and of one node-centred attribute, for fill().
-const char* const grid_xdmf =
-    R"(      <Grid Name="snapshot_@name@" GridType="Uniform">
-        <Time Value="@time@"/>
-        <Information Name="stage" Value="@stage@"/>
-        <Topology TopologyType="Polyvertex" NumberOfElements="@n@" NodesPerElement="1">
-          <DataItem ItemType="HyperSlab" Dimensions="@n@" Type="HyperSlab">
-            <DataItem Dimensions="3 1" Format="XML">0 1 @n@</DataItem>
-            <DataItem Dimensions="@n_ids@" NumberType="Int" Precision="4" Format="HDF">@h5@:/vertex_ids</DataItem>
-          </DataItem>
-        </Topology>
-        <Geometry GeometryType="XY">
-          <DataItem Dimensions="@n@ 2" NumberType="Float" Precision="8" Format="HDF">@h5@:/snapshots/@name@/x</DataItem>
-        </Geometry>
-@attributes@        <Attribute Name="stage_time_s" AttributeType="Scalar" Center="Grid">
-          <DataItem Dimensions="1" NumberType="Float" Precision="8" Format="XML">@stage_time@</DataItem>
-        </Attribute>
-        <Attribute Name="step" AttributeType="Scalar" Center="Grid">
-          <DataItem Dimensions="1" NumberType="Int" Precision="8" Format="XML">@step@</DataItem>
-        </Attribute>
-      </Grid>
-)";
-const char* const attribute_xdmf =
-    R"(        <Attribute Name="@field@" AttributeType="@type@" Center="Node">
-          <DataItem Dimensions="@dims@" NumberType="@number@" Format="HDF">@h5@:/snapshots/@name@/@field@</DataItem>
-        </Attribute>
-)";
 
 } // namespace
 
@@ -290,7 +215,7 @@ void SnapshotWriter::copySnapshots( const std::string& source,
     long n_max = 0;
     for ( long s = 0; s < count; ++s )
     {
-        const std::string g = "/snapshots/" + snapshotName( s );
+        const std::string g = "/snapshots/" + snapshotGroupName( s );
         in.check( H5Ocopy( src, g.c_str(), _file_id, g.c_str(), H5P_DEFAULT,
                            H5P_DEFAULT ),
                   "H5Ocopy", g );
@@ -302,7 +227,7 @@ void SnapshotWriter::copySnapshots( const std::string& source,
             return static_cast<long>(
                 std::get<std::int64_t>( h5.readAttribute( group, g, name ) ) );
         };
-        SnapshotRecord record{
+        XdmfSnapshot record{
             std::get<double>( h5.readAttribute( group, g, "time_s" ) ),
             std::get<std::string>( h5.readAttribute( group, g, "stage" ) ),
             std::get<double>( h5.readAttribute( group, g, "stage_time_s" ) ),
@@ -338,65 +263,6 @@ void SnapshotWriter::copySnapshots( const std::string& source,
                "/@snapshot_count" );
     out.closeAll();
     out.check( H5Fflush( _file_id, H5F_SCOPE_GLOBAL ), "H5Fflush", "/" );
-}
-
-//---------------------------------------------------------------------------//
-std::string
-SnapshotWriter::findSeries( const std::vector<std::string>& candidates,
-                            const SnapshotSeriesMark& keep )
-{
-    if ( keep.count <= 0 )
-        return "";
-    const std::string last = "/snapshots/" + snapshotName( keep.count - 1 );
-    std::string reasons;
-    for ( const std::string& path : candidates )
-    {
-        std::string reason;
-        if ( !std::filesystem::exists( path ) )
-            reason = "does not exist";
-        else
-            try
-            {
-                Hdf5Ops h5( who, path );
-                const hid_t file = h5.open(
-                    H5Fopen( path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT ),
-                    "H5Fopen", H5Fclose, "/" );
-                const auto complete = std::get<std::int64_t>(
-                    h5.readAttribute( file, "/", "snapshot_count" ) );
-                if ( complete < keep.count )
-                    reason = "holds " + std::to_string( complete ) +
-                             " complete snapshot(s), fewer than " +
-                             std::to_string( keep.count );
-                else
-                {
-                    const hid_t group =
-                        h5.open( H5Gopen2( file, last.c_str(), H5P_DEFAULT ),
-                                 "H5Gopen2", H5Gclose, last );
-                    const auto step = std::get<std::int64_t>(
-                        h5.readAttribute( group, last, "step" ) );
-                    const double time_s = std::get<double>(
-                        h5.readAttribute( group, last, "time_s" ) );
-                    if ( step != keep.last_step || time_s != keep.last_time_s )
-                        reason = "its snapshot " + last + " is step " +
-                                 std::to_string( step ) +
-                                 " at t = " + formatDouble( time_s ) +
-                                 " s (another run of the case?)";
-                }
-                h5.closeAll();
-            }
-            catch ( const std::exception& e )
-            {
-                reason = e.what();
-            }
-        if ( reason.empty() )
-            return path;
-        reasons += "\n  " + path + ": " + reason;
-    }
-    throw std::runtime_error(
-        "no snapshot file holds the " + std::to_string( keep.count ) +
-        " snapshot(s) written before the checkpoint (the last at step " +
-        std::to_string( keep.last_step ) +
-        ", t = " + formatDouble( keep.last_time_s ) + " s):" + reasons );
 }
 
 //---------------------------------------------------------------------------//
@@ -439,7 +305,7 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
     checkFields( n_points, fields, int_fields );
 
     Hdf5Ops h5( who, _partial_path );
-    const std::string g = "/snapshots/" + snapshotName( _records.size() );
+    const std::string g = "/snapshots/" + snapshotGroupName( _records.size() );
     const auto n = static_cast<hsize_t>( n_points );
     try
     {
@@ -487,7 +353,7 @@ void SnapshotWriter::write( const double time_s, const std::string& stage,
         H5Eclear2( H5E_DEFAULT );
         throw;
     }
-    SnapshotRecord record{ time_s, stage, stage_time_s, step, n_points, {} };
+    XdmfSnapshot record{ time_s, stage, stage_time_s, step, n_points, {} };
     for ( const auto& f : fields )
         record.fields.push_back( { f.name, f.components, false } );
     for ( const auto& f : int_fields )
@@ -539,56 +405,8 @@ void SnapshotWriter::finalize()
             "' -> '" + _h5_path +
             "' failed: " + std::strerror( error_number ) );
     }
-    writeTextAtomically( _xdmf_path, buildXdmf() );
-}
-
-//---------------------------------------------------------------------------//
-std::string SnapshotWriter::buildXdmf() const
-{
-    // Data items point into the final .h5, relative to the .xdmf folder.
-    const std::string h5 = xmlEscape( _stem + ".h5" );
-    std::string out = "<?xml version=\"1.0\" ?>\n"
-                      "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-                      "<Xdmf Version=\"2.0\">\n  <Domain>\n    <Grid Name=\"" +
-                      xmlEscape( _stem ) +
-                      "\" GridType=\"Collection\" "
-                      "CollectionType=\"Temporal\">\n";
-    for ( std::size_t s = 0; s < _records.size(); ++s )
-    {
-        const SnapshotRecord& r = _records[s];
-        const std::string name = snapshotName( s );
-        const std::string n = std::to_string( r.n_points );
-
-        // Every field except the positions "x" (the Geometry) is an Attribute.
-        std::string attributes;
-        for ( const FieldRecord& f : r.fields )
-            if ( f.name != "x" )
-                attributes +=
-                    fill( attribute_xdmf,
-                          { { "field", xmlEscape( f.name ) },
-                            { "type", f.components == 1   ? "Scalar"
-                                      : f.components <= 3 ? "Vector"
-                                                          : "Matrix" },
-                            { "dims",
-                              f.components == 1
-                                  ? n
-                                  : n + " " + std::to_string( f.components ) },
-                            { "number", f.is_int ? "Int\" Precision=\"4"
-                                                 : "Float\" Precision=\"8" },
-                            { "h5", h5 },
-                            { "name", name } } );
-        out +=
-            fill( grid_xdmf, { { "name", name },
-                               { "time", formatDouble( r.time_s ) },
-                               { "stage", xmlEscape( r.stage ) },
-                               { "n", n },
-                               { "n_ids", std::to_string( _vertex_id_count ) },
-                               { "h5", h5 },
-                               { "attributes", attributes },
-                               { "stage_time", formatDouble( r.stage_time_s ) },
-                               { "step", std::to_string( r.step ) } } );
-    }
-    return out + "    </Grid>\n  </Domain>\n</Xdmf>\n";
+    writeTextAtomically( _xdmf_path,
+                         xdmfText( _stem, _records, _vertex_id_count ) );
 }
 
 } // namespace mpm

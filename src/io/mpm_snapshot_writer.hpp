@@ -1,6 +1,8 @@
 #ifndef MPM_SNAPSHOT_WRITER_HPP
 #define MPM_SNAPSHOT_WRITER_HPP
 
+#include <io/mpm_xdmf.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -167,28 +169,10 @@ class SnapshotWriter
     SnapshotSeriesMark mark() const;
 
   private:
-    // What finalize() needs to describe one snapshot in the XDMF file.
-    struct FieldRecord
-    {
-        std::string name;
-        int components;
-        bool is_int;
-    };
-    struct SnapshotRecord
-    {
-        double time_s;
-        std::string stage;
-        double stage_time_s;
-        long step;
-        long n_points;
-        std::vector<FieldRecord> fields;
-    };
-
     void preparePaths( const std::string& out_dir );
     void createFile();
     void copySnapshots( const std::string& source, long count );
     void writeVertexIds( long n_points );
-    std::string buildXdmf() const;
 
     std::string _stem;
     std::string _h5_path;
@@ -196,7 +180,7 @@ class SnapshotWriter
     std::string _xdmf_path;
     std::int64_t _file_id = -1; // hid_t of the open file
     long _vertex_id_count = 0;  // current size of /vertex_ids
-    std::vector<SnapshotRecord> _records;
+    std::vector<XdmfSnapshot> _records;
     bool _finalized = false;
     bool _write_failed = false; // a write() threw: never publish the file
 };

@@ -1,0 +1,78 @@
+#ifndef MPM_CASE_SCHEMA_HPP
+#define MPM_CASE_SCHEMA_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <io/mpm_case_diagnostics.hpp>
+#include <io/mpm_toml_access.hpp>
+
+#include <string>
+#include <vector>
+
+namespace mpm
+{
+namespace Impl
+{
+//---------------------------------------------------------------------------//
+// Tables of scalar keys ([solver], [water]) declared once: each key's
+// member of the config struct, range and unit serve reading it, the
+// unknown-key check and the documentation test (tests/tst_case_schema.cpp:
+// docs/case-file.md lists every key with its type and default). Internal to
+// the case reader.
+//---------------------------------------------------------------------------//
+
+//! One key of a table read into Config: a number or a boolean.
+template <class Config>
+struct ConfigKey
+{
+    const char* name;
+    double Config::*number; //!< null for a boolean key
+    bool Config::*flag;     //!< null for a number key
+    Range range;            //!< allowed numbers
+    const char* unit;       //!< unit text of the messages
+};
+
+//! A number key.
+template <class Config>
+ConfigKey<Config> numberKey( const char* name, double Config::*member,
+                             const Range& range, const char* unit )
+{
+    return { name, member, nullptr, range, unit };
+}
+
+//! A boolean key.
+template <class Config>
+ConfigKey<Config> flagKey( const char* name, bool Config::*member )
+{
+    return { name, nullptr, member, Range::any(), "" };
+}
+
+//! Reads the keys of table `r` (described as `where` in messages) into
+//! `config`; keys left out keep their values, unknown keys are errors.
+template <class Config>
+void readConfigKeys( TableReader& r, const std::vector<ConfigKey<Config>>& keys,
+                     const std::string& where, Config& config )
+{
+    std::vector<std::string> names;
+    for ( const auto& key : keys )
+        names.push_back( key.name );
+    r.checkKeys( names, where );
+    for ( const auto& key : keys )
+        if ( key.number )
+            config.*key.number =
+                r.number( key.name, key.range, key.unit, Need::Optional )
+                    .value_or( config.*key.number );
+        else
+            config.*key.flag = r.boolean( key.name, Need::Optional )
+                                   .value_or( config.*key.flag );
+}
+
+//! \brief The keys of [solver], in the order the messages list them.
+const std::vector<ConfigKey<SolverConfig>>& solverKeys();
+
+//! \brief The keys of [water].
+const std::vector<ConfigKey<WaterConfig>>& waterKeys();
+
+} // namespace Impl
+} // namespace mpm
+
+#endif // MPM_CASE_SCHEMA_HPP
