@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace
@@ -63,19 +66,25 @@ TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
     const double rho_sat = ( 1 - n ) * rho_s + n * rho_w;
     const auto p_w = cellMeans( snap, snap.p_w, 1, 0, h );
     const auto s_yy = cellMeans( snap, snap.sigma, 4, 1, h );
+    double p_w_error = 0.0, s_yy_error = 0.0;
     for ( const auto& [cell, mean] : p_w )
     {
         const double depth = H - mean.first;
         if ( cell >= static_cast<int>( H / h ) - 2 )
             continue; // the two cells below the drained surface
         const double expected = rho_w * g * depth;
-        EXPECT_NEAR( mean.second, expected, 0.01 * expected )
-            << "cell " << cell;
         const double expected_s = -( rho_sat - rho_w ) * g * depth;
-        EXPECT_NEAR( s_yy.at( cell ).second, expected_s,
-                     0.01 * std::abs( expected_s ) )
-            << "cell " << cell;
+        p_w_error =
+            std::max( p_w_error, std::abs( mean.second / expected - 1.0 ) );
+        s_yy_error = std::max(
+            s_yy_error, std::abs( s_yy.at( cell ).second / expected_s - 1.0 ) );
     }
+    std::printf( "hydrostatic column: cell means off by %.2e (p_w), %.2e "
+                 "(effective sigma_yy)\n",
+                 p_w_error, s_yy_error );
+    // Achieved: 6.5e-3 (p_w), 6.4e-3 (sigma_yy).
+    EXPECT_LT( p_w_error, 0.01 );
+    EXPECT_LT( s_yy_error, 0.01 );
     double v_w_max = 0.0;
     for ( const double v : snap.v_w )
         v_w_max = std::max( v_w_max, std::abs( v ) );
@@ -120,16 +129,24 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
     // vertical stress is the full load: water and skeleton share it.
     const auto p_w = cellMeans( snap, snap.p_w, 1, 0, h );
     const auto s_yy = cellMeans( snap, snap.sigma, 4, 1, h );
+    double p_w_error = 0.0, s_yy_error = 0.0;
     for ( const auto& [cell, mean] : p_w )
     {
         if ( cell == static_cast<int>( H / h ) - 1 )
             continue;
-        EXPECT_NEAR( mean.second, B * 1.0e4, 0.01 * B * 1.0e4 )
-            << "cell " << cell;
-        EXPECT_NEAR( s_yy.at( cell ).second, -( 1.0 - B ) * 1.0e4,
-                     0.01 * ( 1.0 - B ) * 1.0e4 )
-            << "cell " << cell;
+        p_w_error = std::max( p_w_error,
+                              std::abs( mean.second / ( B * 1.0e4 ) - 1.0 ) );
+        s_yy_error =
+            std::max( s_yy_error, std::abs( s_yy.at( cell ).second /
+                                                ( -( 1.0 - B ) * 1.0e4 ) -
+                                            1.0 ) );
     }
+    std::printf( "Skempton's B = %.4f: cell means off by %.2e (p_w), %.2e "
+                 "(effective sigma_yy)\n",
+                 B, p_w_error, s_yy_error );
+    // Achieved: 7.2e-4 (p_w), 5.8e-3 (sigma_yy).
+    EXPECT_LT( p_w_error, 0.002 );
+    EXPECT_LT( s_yy_error, 0.01 );
 }
 
 } // namespace

@@ -145,7 +145,8 @@ TYPED_TEST( SuctionStrength, loss_of_suction_yields_at_analytic_suction )
         p_star = Sp / ( 1.0 + 0.5 * p_star / 1.0e5 );
     std::printf( "yield at p_w = %.1f Pa, analytic %.1f Pa\n", probe.yield_p_w,
                  p_star );
-    EXPECT_NEAR( probe.yield_p_w, p_star, 0.01 * std::abs( p_star ) );
+    // Achieved: 5.2e-4 relative (-7820.3 Pa against -7816.2 Pa).
+    EXPECT_NEAR( probe.yield_p_w, p_star, 0.0015 * std::abs( p_star ) );
 }
 
 } // namespace
