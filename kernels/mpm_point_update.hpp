@@ -40,16 +40,17 @@ struct PointUpdateReport
   position, x_p += du_p (a point that left the grid is removed with
   `remove_outside`, else reported), and the diagnostics of the new state
   (StepDiagnostics; `wave_speed(p, params)` is the point's fastest wave
-  speed).
+  speed; without `cfl_limit` the CFL limit and the largest wave speed are
+  not reduced, dt_limit stays at the largest double and max_wave_speed 0:
+  for a caller that takes them from a later loop).
 */
 template <int GroupSize, class ExecSpace, class StateUpdate, class WaveSpeed>
-PointUpdateReport
-updatePoints( const char* label, const ExecSpace& exec_space,
-              const ParticleViews<ExecSpace>& pv,
-              const WaterParticleViews<ExecSpace>& wv,
-              const physics::MaterialTable& materials,
-              const physics::GridGeometry& grid, const bool remove_outside,
-              const StateUpdate& update_states, const WaveSpeed& wave_speed )
+PointUpdateReport updatePoints(
+    const char* label, const ExecSpace& exec_space,
+    const ParticleViews<ExecSpace>& pv, const WaterParticleViews<ExecSpace>& wv,
+    const physics::MaterialTable& materials, const physics::GridGeometry& grid,
+    const bool remove_outside, const StateUpdate& update_states,
+    const WaveSpeed& wave_speed, const bool cfl_limit = true )
 {
     const PointSoundness<ExecSpace> sound( pv, wv );
     const auto x_p = unmanaged( pv.x_p );
@@ -110,11 +111,14 @@ updatePoints( const char* label, const ExecSpace& exec_space,
                         first_out = q;
                 }
                 // Diagnostics of the new state.
-                const double c = wave_speed( q, *params[l] );
-                const double dt = physics::pointTimeStep(
-                    cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
-                dt_min = dt < dt_min ? dt : dt_min;
-                c_max = c > c_max ? c : c_max;
+                if ( cfl_limit )
+                {
+                    const double c = wave_speed( q, *params[l] );
+                    const double dt = physics::pointTimeStep(
+                        cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
+                    dt_min = dt < dt_min ? dt : dt_min;
+                    c_max = c > c_max ? c : c_max;
+                }
                 energy +=
                     0.5 * m_p( q ) *
                     ( v_p( q, 0 ) * v_p( q, 0 ) + v_p( q, 1 ) * v_p( q, 1 ) );
@@ -338,7 +342,9 @@ struct TwoPhaseStateUpdate
 /*!
   \brief The last point loop of the two-phase step (updatePoints): velocity
   gradient, water divergence, pore pressure (`pore_pressure`,
-  PorePressurePointUpdate), stress, position update and diagnostics.
+  PorePressurePointUpdate), stress, position update and diagnostics (the
+  CFL limit only with `cfl_limit`: the cell water equilibrium, which
+  changes S afterwards, reduces its own).
 */
 template <class ExecSpace, class PorePressureUpdate>
 PointUpdateReport updatePointsTwoPhase(
@@ -348,7 +354,7 @@ PointUpdateReport updatePointsTwoPhase(
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double dt, const bool bbar, const bool remove_outside,
     const PorePressureUpdate& pore_pressure,
-    const BaseCellAccess<ExecSpace>& base )
+    const BaseCellAccess<ExecSpace>& base, const bool cfl_limit )
 {
     const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
         StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar,
@@ -366,7 +372,7 @@ PointUpdateReport updatePointsTwoPhase(
     };
     return updatePoints<PorePressureUpdate::lanes>(
         "mpm::update_points_two_phase", exec_space, pv, wv, materials,
-        gv.geometry, remove_outside, update_states, wave_speed );
+        gv.geometry, remove_outside, update_states, wave_speed, cfl_limit );
 }
 
 } // namespace mpm

@@ -385,7 +385,7 @@ class Simulation
         // PorePressurePointUpdate: Eq. 8 pore pressure, Eq. 2 porosity, the
         // retention state; then StressPointUpdate: the effective stress),
         // the positions, and the diagnostics of the new state (10: the
-        // CFL limit of the next step).
+        // CFL limit of the next step, unless 6b reduces it).
         const auto pore_pressure = porePressurePointUpdate(
             particles, water_particles, water, dt, saturated,
             _retention_current, conditions.prescribed_p_w,
@@ -394,10 +394,10 @@ class Simulation
         PointUpdateReport report = updatePointsTwoPhase(
             exec, particles, water_particles, grid, water_grid, materials,
             water, dt, solver.bbar, solver.remove_points_leaving_grid,
-            pore_pressure, base );
+            pore_pressure, base, !solver.cell_equilibrium );
 
-        // 6b. Cell water equilibrium. It changes S after the point loop's
-        // CFL reduction: its own limit replaces that one (a separate
+        // 6b. Cell water equilibrium. It changes S after the point loop, so
+        // it reduces the CFL limit of the new state itself (a separate
         // reduction if it did not list every active point).
         if ( solver.cell_equilibrium )
         {
