@@ -19,62 +19,67 @@ using mpm_bench::BlockProblem;
 using mpm_bench::PointState;
 
 //---------------------------------------------------------------------------//
-//! P2G scatter of mass, momentum and force into sums kept between steps.
-//! Nothing takes them here: they grow, the work per iteration does not.
-template <class ExecSpace, class Duplication>
-void BM_p2g( benchmark::State& state )
+//! Times phases(problem, step) (fenced) on the block of the benchmark's
+//! size, `step` a DryStepPhases with the benchmark's scatter strategy,
+//! after an untimed prepare(problem).
+template <class ExecSpace, class Duplication, class Prepare, class Phases>
+void timeDryPhases( benchmark::State& state, const Prepare& prepare,
+                    const Phases& phases )
 {
     BlockProblem<ExecSpace> problem( static_cast<int>( state.range( 0 ) ) );
-    const mpm::DryNodeSums<ExecSpace, Duplication> sums(
-        "bench_p2g", problem.sim.grid.geometry.numNodes() );
+    const mpm::DryStepPhases<ExecSpace, Duplication> step(
+        problem.sim.grid.geometry );
+    prepare( problem );
     problem.space.fence();
     for ( auto _ : state )
     {
-        problem.scatter( sums );
-        problem.space.fence();
-    }
-    problem.setCounters( state );
-}
-
-//---------------------------------------------------------------------------//
-//! P2G and the grid update that takes its sums (the pair as the step runs
-//! it: the grid update's own cost is the difference to p2g).
-template <class ExecSpace, class Duplication>
-void BM_p2gGridUpdate( benchmark::State& state )
-{
-    BlockProblem<ExecSpace> problem( static_cast<int>( state.range( 0 ) ) );
-    const mpm::DryNodeSums<ExecSpace, Duplication> sums(
-        "bench_p2g", problem.sim.grid.geometry.numNodes() );
-    problem.space.fence();
-    for ( auto _ : state )
-    {
-        problem.scatter( sums );
-        problem.gridUpdate( sums );
+        phases( problem, step );
         problem.space.fence();
     }
     problem.setCounters( state );
     state.counters["active_nodes"] = problem.sim.grid.num_active;
 }
 
-//---------------------------------------------------------------------------//
-//! G2P with the MUSL remap scatter, and the remap. Repeating them from the
-//! same grid is a contraction of v_p (FLIP fraction < 1) and a projection
-//! of v_i: the state stays bounded, no restore.
+//! P2G scatter of mass, momentum and force into sums kept between steps.
+//! Nothing takes them here: they grow, the work per iteration does not.
+template <class ExecSpace, class Duplication>
+void BM_p2g( benchmark::State& state )
+{
+    timeDryPhases<ExecSpace, Duplication>(
+        state, []( auto& ) {},
+        []( auto& problem, const auto& step ) { problem.scatter( step ); } );
+}
+
+//! P2G and the grid update that takes its sums (the pair as the step runs
+//! it: the grid update's own cost is the difference to p2g).
+template <class ExecSpace, class Duplication>
+void BM_p2gGridUpdate( benchmark::State& state )
+{
+    timeDryPhases<ExecSpace, Duplication>(
+        state, []( auto& ) {},
+        []( auto& problem, const auto& step )
+        {
+            problem.scatter( step );
+            problem.gridUpdate( step );
+        } );
+}
+
+//! G2P with the MUSL remap scatter, and the remap, on the grid of one
+//! (untimed) P2G and grid update. Repeating them from the same grid is a
+//! contraction of v_p (FLIP fraction < 1) and a projection of v_i: the
+//! state stays bounded, no restore.
 template <class ExecSpace, class Duplication>
 void BM_g2pRemap( benchmark::State& state )
 {
-    BlockProblem<ExecSpace> problem( static_cast<int>( state.range( 0 ) ) );
-    const mpm::MomentumSums<ExecSpace, Duplication> sums(
-        "bench_remap", problem.sim.grid.geometry.numNodes() );
-    problem.scatter( problem.node_sums );
-    problem.gridUpdate( problem.node_sums );
-    problem.space.fence();
-    for ( auto _ : state )
-    {
-        problem.gatherAndRemap( sums );
-        problem.space.fence();
-    }
-    problem.setCounters( state );
+    timeDryPhases<ExecSpace, Duplication>(
+        state,
+        []( auto& problem )
+        {
+            problem.scatter( problem.phases );
+            problem.gridUpdate( problem.phases );
+        },
+        []( auto& problem, const auto& step )
+        { problem.gatherAndRemap( step ); } );
 }
 
 //---------------------------------------------------------------------------//

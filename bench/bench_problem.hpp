@@ -123,14 +123,12 @@ class BlockProblem
     mpm::Simulation<ExecSpace> sim;
     mpm::StepSettings settings;
     ExecSpace space;
-    mpm::DryNodeSums<ExecSpace> node_sums;
-    mpm::MomentumSums<ExecSpace> momentum_sums;
+    mpm::DryStepPhases<ExecSpace> phases; //!< the simulation's scatters
 
     explicit BlockProblem( const int n )
         : prepared( preparedState( n ) )
         , sim( prepared.config )
-        , node_sums( "bench_p2g", sim.grid.geometry.numNodes() )
-        , momentum_sums( "bench_remap", sim.grid.geometry.numNodes() )
+        , phases( sim.grid.geometry )
     {
         const mpm::StageConfig& stage = prepared.config.stages.front();
         settings.gravity_x = stage.gravity_m_per_s2[0];
@@ -150,42 +148,40 @@ class BlockProblem
 
     double dt() const { return prepared.dt; }
 
-    //! P2G scatter of mass, momentum and force into `sums`.
-    template <class Sums>
-    void scatter( const Sums& sums )
+    //! The phases of the dry step as Simulation::advanceDry runs them
+    //! (mpm::DryStepPhases), with the stage's settings; `step` holds the
+    //! sums (its scatter strategy).
+    template <class Phases>
+    void scatter( const Phases& step )
     {
-        mpm::scatterMassMomentumForce( space, sim.particles, sim.grid.geometry,
-                                       settings.gravity_x, settings.gravity_y,
-                                       sim.conditions.load_force, sums );
+        step.scatter( space, sim.particles, sim.grid.geometry,
+                      settings.gravity_x, settings.gravity_y,
+                      sim.conditions.load_force );
     }
-    //! The grid update, which takes the P2G sums.
-    template <class Sums>
-    void gridUpdate( const Sums& sums )
+    template <class Phases>
+    void gridUpdate( const Phases& step )
     {
-        mpm::gridUpdateDry( space, sim.grid, sums, dt(), settings.damping,
-                            sim.solver.inertia_scaling );
+        step.updateGrid( space, sim.grid, dt(), settings.damping,
+                         sim.solver.inertia_scaling );
     }
-    //! G2P with the remap scatter, and the remap, which takes its sums.
-    template <class Sums>
-    void gatherAndRemap( const Sums& sums )
+    template <class Phases>
+    void gatherAndRemap( const Phases& step )
     {
-        mpm::g2pVelocityRemap( space, sim.particles, sim.grid, dt(),
-                               sim.solver.flip_fraction, sums );
-        mpm::remapVelocity( space, sim.grid, sums );
+        step.gatherAndRemap( space, sim.particles, sim.grid, dt(),
+                             sim.solver.flip_fraction );
     }
-    //! The last point loop: gradient, stress, positions, diagnostics.
     void updatePoints()
     {
-        mpm::updatePointsDry( space, sim.particles, sim.grid, sim.materials,
-                              dt(), false,
-                              sim.solver.remove_points_leaving_grid );
+        phases.updatePoints( space, sim.particles, sim.grid, sim.materials,
+                             dt(), false,
+                             sim.solver.remove_points_leaving_grid );
     }
     //! The phases before the last point loop, with the default sums.
     void stepToPointUpdate()
     {
-        scatter( node_sums );
-        gridUpdate( node_sums );
-        gatherAndRemap( momentum_sums );
+        scatter( phases );
+        gridUpdate( phases );
+        gatherAndRemap( phases );
     }
 
     //! Rate and problem counters of a finished benchmark.

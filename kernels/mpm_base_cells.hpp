@@ -331,10 +331,8 @@ void baseCellRates( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
     const auto list_c = unmanaged( cells.list_c );
     const auto force_c = unmanaged( cells.force_c );
     const auto rate_c = unmanaged( cells.rate_c );
-    const auto v_s = unmanaged( gv.v_i );
-    const auto v_w = unmanaged( wg.v_w_i );
-    const auto m_w = unmanaged( wg.m_w_i );
-    const auto vol = unmanaged( wg.vol_i );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
     const physics::BaseCellCompletion completion{ gv.geometry.h };
     const int ny = gv.geometry.ny;
 
@@ -360,12 +358,14 @@ void baseCellRates( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                 completion.missing( k, m0, force_c( ci, cj, K::vol_xi ),
                                     force_c( ci, cj, K::vol_eta ), D );
                 const double nS =
-                    m_w( i, j ) > 0.0
-                        ? m_w( i, j ) / ( water_density * vol( i, j ) )
+                    water_nodes.m_w_i( i, j ) > 0.0
+                        ? water_nodes.m_w_i( i, j ) /
+                              ( water_density * water_nodes.vol_i( i, j ) )
                         : 0.0;
                 for ( int d = 0; d < 2; ++d )
-                    outflow += ( nS * ( v_w( i, j, d ) - v_s( i, j, d ) ) +
-                                 S * v_s( i, j, d ) ) *
+                    outflow += ( nS * ( water_nodes.v_w_i( i, j, d ) -
+                                        nodes.v_i( i, j, d ) ) +
+                                 S * nodes.v_i( i, j, d ) ) *
                                D[d];
             }
             rate_c( ci, cj ) = outflow / m0;

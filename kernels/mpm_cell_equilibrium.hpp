@@ -69,8 +69,7 @@ void listCellPoints( const ExecSpace& exec_space,
 {
     const int num_cells = grid.nx * grid.ny;
     const int num_points = pv.size();
-    const auto x_p = unmanaged( pv.x_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     const auto condition_p = unmanaged( wv.p_w_condition_p );
     const auto cell_p = unmanaged( lists.cell_p );
     const auto offset_c = unmanaged( lists.offset_c );
@@ -85,8 +84,9 @@ void listCellPoints( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int p ) {
             int ci, cj;
             cell_p( p ) = -1;
-            if ( status_p( p ) != point_active ||
-                 !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
+            if ( points.status_p( p ) != point_active ||
+                 !grid.cellOf( points.x_p( p, 0 ), points.x_p( p, 1 ), ci,
+                               cj ) )
                 return;
             cell_p( p ) = ci * ny + cj;
             Kokkos::atomic_increment( &fill_c( ci * ny + cj ) );
@@ -152,8 +152,8 @@ void cellPressureSlopes( const ExecSpace& exec_space,
                          const CellPointLists<ExecSpace>& lists )
 {
     const int num_cells = grid.nx * grid.ny;
-    const auto x_p = unmanaged( pv.x_p );
-    const auto p_w_p = unmanaged( wv.p_w_p );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
     const auto offset_c = unmanaged( lists.offset_c );
     const auto points_c = unmanaged( lists.points_c );
     const auto level_c = unmanaged( lists.level_c );
@@ -174,9 +174,9 @@ void cellPressureSlopes( const ExecSpace& exec_space,
             for ( int a = begin; a < begin + count; ++a )
             {
                 const int q = points_c( a );
-                p += p_w_p( q );
-                x += x_p( q, 0 );
-                y += x_p( q, 1 );
+                p += water_points.p_w_p( q );
+                x += points.x_p( q, 0 );
+                y += points.x_p( q, 1 );
             }
             const double inv = count > 0 ? 1.0 / count : 0.0;
             level_c( c ) = p * inv;
@@ -271,26 +271,17 @@ CellEquilibriumLimit cellWaterEquilibrium(
         Kokkos::deep_copy( exec_space, lists.slope_c, 0.0 );
 
     const int num_cells = grid.nx * grid.ny;
-    const auto x_p = unmanaged( pv.x_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto p_w_p = unmanaged( wv.p_w_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto dS_dp_p = unmanaged( wv.dS_dp_p );
-    const auto k_rel_p = unmanaged( wv.k_rel_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto v_w_p = unmanaged( wv.v_w_p );
-    const auto v_s_p = unmanaged( pv.v_p );
-    const auto condition_p = unmanaged( wv.p_w_condition_p );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
     const auto offset_c = unmanaged( lists.offset_c );
     const auto points_c = unmanaged( lists.points_c );
     const auto centre_c = unmanaged( lists.centre_c );
     const auto slope_c = unmanaged( lists.slope_c );
     const auto bound_c = unmanaged( lists.bound_c );
     const auto change_p = unmanaged( lists.change_p );
-    const auto m_p = unmanaged( pv.m_p );
     const double cell_size = grid.h;
     const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
+    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water );
 
     CellEquilibriumLimit result{ { 0.0, 0.0 }, 0 };
     Kokkos::parallel_reduce(
@@ -303,7 +294,7 @@ CellEquilibriumLimit cellWaterEquilibrium(
                 const int begin = offset_c( c );
                 int end = begin; // the free points come first
                 while ( end < offset_c( c + 1 ) &&
-                        condition_p( points_c( end ) ) < 0 )
+                        water_points.p_w_condition_p( points_c( end ) ) < 0 )
                     ++end;
                 if ( end - begin < 2 )
                     return;
@@ -314,17 +305,19 @@ CellEquilibriumLimit cellWaterEquilibrium(
                 double share = linear_profile ? 1.0 : 0.0;
                 const auto profile = [&]( const int p )
                 {
-                    return share * ( slope_c( c, 0 ) *
-                                         ( x_p( p, 0 ) - centre_c( c, 0 ) ) +
-                                     slope_c( c, 1 ) *
-                                         ( x_p( p, 1 ) - centre_c( c, 1 ) ) );
+                    return share * ( slope_c( c, 0 ) * ( points.x_p( p, 0 ) -
+                                                         centre_c( c, 0 ) ) +
+                                     slope_c( c, 1 ) * ( points.x_p( p, 1 ) -
+                                                         centre_c( c, 1 ) ) );
                 };
                 const auto point = [&]( const int a )
                 {
                     const int p = points_c( begin + a );
                     return physics::CellWaterEquilibrium::Point{
-                        vol_p( p ) * n_p( p ), S_p( p ), p_w_p( p ),
-                        profile( p ), &materials[material_p( p )].retention };
+                        points.vol_p( p ) * water_points.n_p( p ),
+                        water_points.S_p( p ), water_points.p_w_p( p ),
+                        profile( p ),
+                        &materials[points.material_p( p )].retention };
                 };
                 bool changed = false;
                 double level = equilibrium.solve( end - begin, point, changed );
@@ -351,7 +344,7 @@ CellEquilibriumLimit cellWaterEquilibrium(
                     for ( int a = begin; a < end; ++a )
                     {
                         const int p = points_c( a );
-                        p_w_p( p ) = level + profile( p );
+                        water_points.p_w_p( p ) = level + profile( p );
                     }
                     return;
                 }
@@ -362,23 +355,25 @@ CellEquilibriumLimit cellWaterEquilibrium(
                     const int p = points_c( a );
                     const double p_w = level + profile( p );
                     const physics::RetentionState state =
-                        RetentionAt{ materials[material_p( p )].retention }
+                        RetentionAt{
+                            materials[points.material_p( p )].retention }
                             .state( p_w );
-                    const double change =
-                        vol_p( p ) * n_p( p ) * ( state.S - S_p( p ) );
+                    const double change = points.vol_p( p ) *
+                                          water_points.n_p( p ) *
+                                          ( state.S - water_points.S_p( p ) );
                     change_p( p ) = change;
                     if ( change < 0.0 )
                     {
                         given -= change;
-                        given_v[0] -=
-                            change * ( v_w_p( p, 0 ) - v_s_p( p, 0 ) );
-                        given_v[1] -=
-                            change * ( v_w_p( p, 1 ) - v_s_p( p, 1 ) );
+                        given_v[0] -= change * ( water_points.v_w_p( p, 0 ) -
+                                                 points.v_p( p, 0 ) );
+                        given_v[1] -= change * ( water_points.v_w_p( p, 1 ) -
+                                                 points.v_p( p, 1 ) );
                     }
-                    p_w_p( p ) = p_w;
-                    S_p( p ) = state.S;
-                    dS_dp_p( p ) = state.dS_dp;
-                    k_rel_p( p ) = state.k_rel;
+                    water_points.p_w_p( p ) = p_w;
+                    water_points.S_p( p ) = state.S;
+                    water_points.dS_dp_p( p ) = state.dS_dp;
+                    water_points.k_rel_p( p ) = state.k_rel;
                 }
                 // The water that moves between the points carries its seepage
                 // velocity w = v_w - v_s: the points that give water keep
@@ -392,12 +387,15 @@ CellEquilibriumLimit cellWaterEquilibrium(
                     const double change = change_p( p );
                     if ( !( change > 0.0 ) )
                         continue;
-                    const double after = vol_p( p ) * n_p( p ) * S_p( p );
+                    const double after = points.vol_p( p ) *
+                                         water_points.n_p( p ) *
+                                         water_points.S_p( p );
                     for ( int d = 0; d < 2; ++d )
-                        v_w_p( p, d ) =
-                            v_s_p( p, d ) +
+                        water_points.v_w_p( p, d ) =
+                            points.v_p( p, d ) +
                             ( ( after - change ) *
-                                  ( v_w_p( p, d ) - v_s_p( p, d ) ) +
+                                  ( water_points.v_w_p( p, d ) -
+                                    points.v_p( p, d ) ) +
                               change * given_v[d] / given ) /
                                 after;
                 }
@@ -407,13 +405,8 @@ CellEquilibriumLimit cellWaterEquilibrium(
             for ( int a = offset_c( c ); a < offset_c( c + 1 ); ++a )
             {
                 const int p = points_c( a );
-                const double wave = physics::waveSpeedTwoPhase(
-                    materials[material_p( p )], water, m_p( p ), vol_p( p ),
-                    n_p( p ), S_p( p ) );
-                const double dt = physics::pointTimeStep(
-                    cell_size, wave, v_s_p( p, 0 ), v_s_p( p, 1 ) );
-                dt_min = dt < dt_min ? dt : dt_min;
-                c_max = wave > c_max ? wave : c_max;
+                addPointLimit( wave_speed, p, materials[points.material_p( p )],
+                               cell_size, dt_min, c_max );
                 ++listed;
             }
         },

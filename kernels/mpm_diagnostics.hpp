@@ -81,18 +81,16 @@ template <class ExecSpace>
 double kineticEnergy( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     double energy = 0.0;
     Kokkos::parallel_reduce(
         "mpm::kinetic_energy",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, double& sum ) {
-            if ( status_p( p ) == point_active )
-                sum +=
-                    0.5 * m_p( p ) *
-                    ( v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 ) );
+            if ( points.status_p( p ) == point_active )
+                sum += 0.5 * points.m_p( p ) *
+                       ( points.v_p( p, 0 ) * points.v_p( p, 0 ) +
+                         points.v_p( p, 1 ) * points.v_p( p, 1 ) );
         },
         Kokkos::Sum<double>( energy ) );
     return energy;
@@ -106,12 +104,12 @@ double maxLengthOverActivePoints( const ExecSpace& exec_space,
                                   const ParticleViews<ExecSpace>& pv,
                                   const Length2& length2 )
 {
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     double max_length2 = 0.0;
     Kokkos::parallel_reduce(
         label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, double& max2 ) {
-            if ( status_p( p ) == point_active && length2( p ) > max2 )
+            if ( points.status_p( p ) == point_active && length2( p ) > max2 )
                 max2 = length2( p );
         },
         Kokkos::Max<double>( max_length2 ) );
@@ -123,10 +121,11 @@ template <class ExecSpace>
 double maxPointSpeed( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
-    const auto v_p = unmanaged( pv.v_p );
+    const auto points = unmanaged( pv );
     return maxLengthOverActivePoints(
         exec_space, "mpm::max_point_speed", pv, KOKKOS_LAMBDA( const int p ) {
-            return v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
+            return points.v_p( p, 0 ) * points.v_p( p, 0 ) +
+                   points.v_p( p, 1 ) * points.v_p( p, 1 );
         } );
 }
 
@@ -140,17 +139,16 @@ long countPointsNotBelowSpeed( const ExecSpace& exec_space,
                                const ParticleViews<ExecSpace>& pv,
                                const double speed )
 {
-    const auto v_p = unmanaged( pv.v_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     const double speed2 = speed * speed;
     long count = 0;
     Kokkos::parallel_reduce(
         "mpm::count_points_not_below_speed",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, long& n ) {
-            const double v2 =
-                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
-            if ( status_p( p ) == point_active && !( v2 < speed2 ) )
+            const double v2 = points.v_p( p, 0 ) * points.v_p( p, 0 ) +
+                              points.v_p( p, 1 ) * points.v_p( p, 1 );
+            if ( points.status_p( p ) == point_active && !( v2 < speed2 ) )
                 ++n;
         },
         count );
@@ -162,12 +160,11 @@ template <class ExecSpace>
 double maxDisplacement( const ExecSpace& exec_space,
                         const ParticleViews<ExecSpace>& pv )
 {
-    const auto x_p = unmanaged( pv.x_p );
-    const auto x0_p = unmanaged( pv.x0_p );
+    const auto points = unmanaged( pv );
     return maxLengthOverActivePoints(
         exec_space, "mpm::max_displacement", pv, KOKKOS_LAMBDA( const int p ) {
-            const double u_x = x_p( p, 0 ) - x0_p( p, 0 );
-            const double u_y = x_p( p, 1 ) - x0_p( p, 1 );
+            const double u_x = points.x_p( p, 0 ) - points.x0_p( p, 0 );
+            const double u_y = points.x_p( p, 1 ) - points.x0_p( p, 1 );
             return u_x * u_x + u_y * u_y;
         } );
 }
@@ -186,18 +183,17 @@ int findUnstablePoint( const ExecSpace& exec_space,
                        const double speed_limit )
 {
     const PointSoundness<ExecSpace> sound( pv, wv );
-    const auto v_p = unmanaged( pv.v_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     const int none = pv.size();
     int first = none;
     Kokkos::parallel_reduce(
         "mpm::find_unstable_point",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, int& first_bad ) {
-            if ( status_p( p ) != point_active )
+            if ( points.status_p( p ) != point_active )
                 return;
-            const double speed2 =
-                v_p( p, 0 ) * v_p( p, 0 ) + v_p( p, 1 ) * v_p( p, 1 );
+            const double speed2 = points.v_p( p, 0 ) * points.v_p( p, 0 ) +
+                                  points.v_p( p, 1 ) * points.v_p( p, 1 );
             const bool bad =
                 !sound( p, speed2 ) || speed2 > speed_limit * speed_limit;
             if ( bad && p < first_bad )

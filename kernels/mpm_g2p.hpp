@@ -114,19 +114,18 @@ void g2pVelocityRemap( const ExecSpace& exec_space,
     const auto sums = scatter.handle();
     const auto grid = gv.geometry;
     const int ny1 = grid.ny + 1;
-    const auto v_i = unmanaged( gv.v_i );
-    const auto dv_i = unmanaged( gv.dv_i );
-    const auto v_p = unmanaged( pv.v_p );
-    const auto du_p = unmanaged( pv.du_p );
-    const auto m_p = unmanaged( pv.m_p );
+    const auto nodes = unmanaged( gv );
+    const auto points = unmanaged( pv );
 
     forEachPointStencil(
         "mpm::g2p_velocity_remap", exec_space, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
-            g2pPoint( p, ci, cj, w, v_i, dv_i, flip_fraction, v_p, dt, du_p );
-            scatterPointMomentum( sums.access(), ci, cj, ny1, w, m_p( p ),
-                                  v_p( p, 0 ), v_p( p, 1 ) );
+            g2pPoint( p, ci, cj, w, nodes.v_i, nodes.dv_i, flip_fraction,
+                      points.v_p, dt, points.du_p );
+            scatterPointMomentum( sums.access(), ci, cj, ny1, w,
+                                  points.m_p( p ), points.v_p( p, 0 ),
+                                  points.v_p( p, 1 ) );
         } );
 }
 
@@ -151,46 +150,43 @@ void g2pVelocityRemapTwoPhase(
     const auto sums = scatter.handle();
     const auto grid = gv.geometry;
     const int ny1 = grid.ny + 1;
-    const auto v_s_i = unmanaged( gv.v_i );
-    const auto dv_s_i = unmanaged( gv.dv_i );
-    const auto v_w_i = unmanaged( wg.v_w_i );
-    const auto dv_w_i = unmanaged( wg.dv_w_i );
-    const auto v_s_p = unmanaged( pv.v_p );
-    const auto du_p = unmanaged( pv.du_p );
-    const auto m_s_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto v_w_p = unmanaged( wv.v_w_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto k_rel_p = unmanaged( wv.k_rel_p );
-    const auto material_p = unmanaged( pv.material_p );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
 
     forEachPointStencil(
         "mpm::g2p_velocity_remap_two_phase", exec_space, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             double v_s_pic[2], dv_s[2], v_w_pic[2], dv_w[2];
-            interpolateVelocity( ci, cj, w, v_s_i, dv_s_i, v_s_pic, dv_s );
-            interpolateVelocity( ci, cj, w, v_w_i, dv_w_i, v_w_pic, dv_w );
+            interpolateVelocity( ci, cj, w, nodes.v_i, nodes.dv_i, v_s_pic,
+                                 dv_s );
+            interpolateVelocity( ci, cj, w, water_nodes.v_w_i,
+                                 water_nodes.dv_w_i, v_w_pic, dv_w );
+            const double n = water_points.n_p( p );
+            const double S = water_points.S_p( p );
             // Only the relative blend uses it (an exp per point).
             const double memory =
                 relative_flip
                     ? physics::seepageMemory(
-                          dt, n_p( p ), S_p( p ),
-                          materials[material_p( p )].permeability, k_rel_p( p ),
-                          water.viscosity, water.density, inertia_scaling,
-                          flip_fraction )
+                          dt, n, S,
+                          materials[points.material_p( p )].permeability,
+                          water_points.k_rel_p( p ), water.viscosity,
+                          water.density, inertia_scaling, flip_fraction )
                     : 0.0;
+            const auto v_s_p = points.v_p;
+            const auto v_w_p = water_points.v_w_p;
             for ( int d = 0; d < 2; ++d )
             {
                 twoPhaseBlend( flip_fraction, relative_flip, memory,
                                v_s_p( p, d ), dv_s[d], v_s_pic[d],
                                v_w_p( p, d ), dv_w[d], v_w_pic[d] );
-                du_p( p, d ) = dt * v_s_pic[d];
+                points.du_p( p, d ) = dt * v_s_pic[d];
             }
-            const double m_w = n_p( p ) * S_p( p ) * water.density * vol_p( p );
+            const double m_w = n * S * water.density * points.vol_p( p );
             const auto node = sums.access();
-            scatterPointMomentum( node, ci, cj, ny1, w, m_s_p( p ),
+            scatterPointMomentum( node, ci, cj, ny1, w, points.m_p( p ),
                                   v_s_p( p, 0 ), v_s_p( p, 1 ), 0 );
             scatterPointMomentum( node, ci, cj, ny1, w, m_w, v_w_p( p, 0 ),
                                   v_w_p( p, 1 ), 2 );

@@ -3,6 +3,7 @@
 
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_node_loop.hpp>
 #include <mpm_p2g.hpp>
 #include <physics/mpm_nodal_update.hpp>
 
@@ -27,31 +28,22 @@ void gridUpdateDry(
     const auto sums = scatter.handle();
     gv.num_active = scatter.listTouched( exec_space, gv.active_i );
     const physics::DryNodalUpdate update{ dt, damping, inertia_scaling };
-    const auto m_i = unmanaged( gv.m_i );
-    const auto p_i = unmanaged( gv.p_i );
-    const auto f_i = unmanaged( gv.f_i );
-    const auto v_i = unmanaged( gv.v_i );
-    const auto dv_i = unmanaged( gv.dv_i );
-    const auto flags_i = unmanaged( gv.flags_i );
-    const auto active_i = unmanaged( gv.active_i );
-    const int ny1 = gv.geometry.ny + 1;
+    const auto nodes = unmanaged( gv );
 
-    Kokkos::parallel_for(
-        "mpm::grid_update_dry",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            const int i = n / ny1;
-            const int j = n % ny1;
-            takeMassMomentumForce( sums, n, i, j, m_i, p_i, f_i );
+    forEachActiveNode(
+        "mpm::grid_update_dry", exec_space, gv,
+        KOKKOS_LAMBDA( const int n, const int i, const int j ) {
+            takeMassMomentumForce( sums, n, i, j, nodes.m_i, nodes.p_i,
+                                   nodes.f_i );
             // Nodes touched with zero weight only carry no mass.
-            if ( !( m_i( i, j ) > 0.0 ) )
+            const double m = nodes.m_i( i, j );
+            if ( !( m > 0.0 ) )
                 return;
-            const int flags = flags_i( i, j );
-            update( m_i( i, j ), p_i( i, j, 0 ), f_i( i, j, 0 ),
-                    flags & node_fix_x, v_i( i, j, 0 ), dv_i( i, j, 0 ) );
-            update( m_i( i, j ), p_i( i, j, 1 ), f_i( i, j, 1 ),
-                    flags & node_fix_y, v_i( i, j, 1 ), dv_i( i, j, 1 ) );
+            const int flags = nodes.flags_i( i, j );
+            for ( int d = 0; d < 2; ++d )
+                update( m, nodes.p_i( i, j, d ), nodes.f_i( i, j, d ),
+                        flags & ( d == 0 ? node_fix_x : node_fix_y ),
+                        nodes.v_i( i, j, d ), nodes.dv_i( i, j, d ) );
         } );
 }
 
@@ -66,29 +58,21 @@ void remapVelocity( const ExecSpace& exec_space, GridViews<ExecSpace>& gv,
                     const GridScatter<ExecSpace, 2, Duplication>& scatter )
 {
     const auto sums = scatter.handle();
-    const auto m_i = unmanaged( gv.m_i );
-    const auto p_i = unmanaged( gv.p_i );
-    const auto v_i = unmanaged( gv.v_i );
-    const auto flags_i = unmanaged( gv.flags_i );
-    const auto active_i = unmanaged( gv.active_i );
-    const int ny1 = gv.geometry.ny + 1;
+    const auto nodes = unmanaged( gv );
 
-    Kokkos::parallel_for(
-        "mpm::remap_velocity",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            const int i = n / ny1;
-            const int j = n % ny1;
-            p_i( i, j, 0 ) = sums.take( n, 0 );
-            p_i( i, j, 1 ) = sums.take( n, 1 );
-            if ( !( m_i( i, j ) > 0.0 ) )
+    forEachActiveNode(
+        "mpm::remap_velocity", exec_space, gv,
+        KOKKOS_LAMBDA( const int n, const int i, const int j ) {
+            nodes.p_i( i, j, 0 ) = sums.take( n, 0 );
+            nodes.p_i( i, j, 1 ) = sums.take( n, 1 );
+            const double m = nodes.m_i( i, j );
+            if ( !( m > 0.0 ) )
                 return;
-            double v_x = p_i( i, j, 0 ) / m_i( i, j );
-            double v_y = p_i( i, j, 1 ) / m_i( i, j );
-            physics::applyVelocityBC( flags_i( i, j ), v_x, v_y );
-            v_i( i, j, 0 ) = v_x;
-            v_i( i, j, 1 ) = v_y;
+            double v_x = nodes.p_i( i, j, 0 ) / m;
+            double v_y = nodes.p_i( i, j, 1 ) / m;
+            physics::applyVelocityBC( nodes.flags_i( i, j ), v_x, v_y );
+            nodes.v_i( i, j, 0 ) = v_x;
+            nodes.v_i( i, j, 1 ) = v_y;
         } );
 }
 

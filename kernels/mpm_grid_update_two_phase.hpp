@@ -4,6 +4,7 @@
 #include <mpm_base_cells.hpp>
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_node_loop.hpp>
 #include <mpm_p2g_two_phase.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_nodal_update.hpp>
@@ -45,31 +46,13 @@ void gridUpdateTwoPhase(
     const int nx = gv.geometry.nx;
     gv.num_active = scatter.listTouched( exec_space, gv.active_i );
     const physics::TwoPhaseNodalUpdate update{ dt, damping, inertia_scaling };
-    const auto m_s_i = unmanaged( gv.m_i );
-    const auto mv_s_i = unmanaged( gv.p_i );
-    const auto f_m_i = unmanaged( gv.f_i );
-    const auto v_s_i = unmanaged( gv.v_i );
-    const auto dv_s_i = unmanaged( gv.dv_i );
-    const auto flags_i = unmanaged( gv.flags_i );
-    const auto m_w_i = unmanaged( wg.m_w_i );
-    const auto vol_i = unmanaged( wg.vol_i );
-    const auto mv_w_i = unmanaged( wg.mv_w_i );
-    const auto f_w_i = unmanaged( wg.f_w_i );
-    const auto q_i = unmanaged( wg.q_i );
-    const auto v_w_i = unmanaged( wg.v_w_i );
-    const auto dv_w_i = unmanaged( wg.dv_w_i );
-    const auto flags_w_i = unmanaged( wg.flags_w_i );
-    const auto active_i = unmanaged( gv.active_i );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
     const auto flux_i = unmanaged( inflow_flux_i );
-    const int ny1 = gv.geometry.ny + 1;
 
-    Kokkos::parallel_for(
-        "mpm::grid_update_two_phase",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            const int i = n / ny1;
-            const int j = n % ny1;
+    forEachActiveNode(
+        "mpm::grid_update_two_phase", exec_space, gv,
+        KOKKOS_LAMBDA( const int n, const int i, const int j ) {
             const double m_s = sums.take( n, F::m_s );
             const double m_w = sums.take( n, F::m_w );
             const double vol = sums.take( n, F::vol );
@@ -85,21 +68,21 @@ void gridUpdateTwoPhase(
             base.addNodeForces( i, j, nx, f_m, f_w );
             for ( int d = 0; d < 2; ++d )
             {
-                mv_s_i( i, j, d ) = mv_s[d];
-                f_m_i( i, j, d ) = f_m[d];
-                mv_w_i( i, j, d ) = mv_w[d];
-                f_w_i( i, j, d ) = f_w[d];
+                nodes.p_i( i, j, d ) = mv_s[d];
+                nodes.f_i( i, j, d ) = f_m[d];
+                water_nodes.mv_w_i( i, j, d ) = mv_w[d];
+                water_nodes.f_w_i( i, j, d ) = f_w[d];
             }
-            m_s_i( i, j ) = m_s;
-            m_w_i( i, j ) = m_w;
-            vol_i( i, j ) = vol;
-            q_i( i, j ) = q;
+            nodes.m_i( i, j ) = m_s;
+            water_nodes.m_w_i( i, j ) = m_w;
+            water_nodes.vol_i( i, j ) = vol;
+            water_nodes.q_i( i, j ) = q;
             // Nodes touched with zero weight only carry no mass.
             if ( !( m_s > 0.0 ) )
                 return;
 
-            const int flags = flags_i( i, j );
-            const int flags_w = flags_w_i( i, j );
+            const int flags = nodes.flags_i( i, j );
+            const int flags_w = water_nodes.flags_w_i( i, j );
             const physics::NodalWater water = physics::nodalWater(
                 m_w, vol, q, water_density, water_viscosity );
             for ( int d = 0; d < 2; ++d )
@@ -112,10 +95,10 @@ void gridUpdateTwoPhase(
                             water.locked || ( flags_w & bit ) || flux != 0.0,
                             physics::tiedSeepage( flux, m_w, m_s, vol,
                                                   water_density ) );
-                v_s_i( i, j, d ) = r.v_s;
-                dv_s_i( i, j, d ) = r.dv_s;
-                v_w_i( i, j, d ) = r.v_w;
-                dv_w_i( i, j, d ) = r.dv_w;
+                nodes.v_i( i, j, d ) = r.v_s;
+                nodes.dv_i( i, j, d ) = r.dv_s;
+                water_nodes.v_w_i( i, j, d ) = r.v_w;
+                water_nodes.dv_w_i( i, j, d ) = r.dv_w;
             }
         } );
 }
@@ -136,45 +119,34 @@ void remapVelocityTwoPhase(
     const double water_density )
 {
     const auto sums = scatter.handle();
-    const auto m_s_i = unmanaged( gv.m_i );
-    const auto mv_s_i = unmanaged( gv.p_i );
-    const auto v_s_i = unmanaged( gv.v_i );
-    const auto flags_i = unmanaged( gv.flags_i );
-    const auto m_w_i = unmanaged( wg.m_w_i );
-    const auto mv_w_i = unmanaged( wg.mv_w_i );
-    const auto v_w_i = unmanaged( wg.v_w_i );
-    const auto flags_w_i = unmanaged( wg.flags_w_i );
-    const auto vol_i = unmanaged( wg.vol_i );
-    const auto active_i = unmanaged( gv.active_i );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
     const auto flux_i = unmanaged( inflow_flux_i );
-    const int ny1 = gv.geometry.ny + 1;
 
-    Kokkos::parallel_for(
-        "mpm::remap_velocity_two_phase",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int n = active_i( a );
-            const int i = n / ny1;
-            const int j = n % ny1;
+    forEachActiveNode(
+        "mpm::remap_velocity_two_phase", exec_space, gv,
+        KOKKOS_LAMBDA( const int n, const int i, const int j ) {
+            double mv_s[2], mv_w[2];
             for ( int d = 0; d < 2; ++d )
             {
-                mv_s_i( i, j, d ) = sums.take( n, d );
-                mv_w_i( i, j, d ) = sums.take( n, 2 + d );
+                mv_s[d] = nodes.p_i( i, j, d ) = sums.take( n, d );
+                mv_w[d] = water_nodes.mv_w_i( i, j, d ) = sums.take( n, 2 + d );
             }
-            if ( !( m_s_i( i, j ) > 0.0 ) )
+            const double m_s = nodes.m_i( i, j );
+            if ( !( m_s > 0.0 ) )
                 return;
-            double v_s[2] = { mv_s_i( i, j, 0 ) / m_s_i( i, j ),
-                              mv_s_i( i, j, 1 ) / m_s_i( i, j ) };
-            physics::applyVelocityBC( flags_i( i, j ), v_s[0], v_s[1] );
+            double v_s[2] = { mv_s[0] / m_s, mv_s[1] / m_s };
+            physics::applyVelocityBC( nodes.flags_i( i, j ), v_s[0], v_s[1] );
+            const int flags_w = water_nodes.flags_w_i( i, j );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;
                 const double flux = flux_i( i, j, d );
-                v_s_i( i, j, d ) = v_s[d];
-                v_w_i( i, j, d ) = physics::remappedWaterVelocity(
-                    v_s[d], mv_w_i( i, j, d ), m_w_i( i, j ), m_s_i( i, j ),
-                    ( flags_w_i( i, j ) & bit ) || flux != 0.0, flux,
-                    vol_i( i, j ), water_density );
+                nodes.v_i( i, j, d ) = v_s[d];
+                water_nodes.v_w_i( i, j, d ) = physics::remappedWaterVelocity(
+                    v_s[d], mv_w[d], water_nodes.m_w_i( i, j ), m_s,
+                    ( flags_w & bit ) || flux != 0.0, flux,
+                    water_nodes.vol_i( i, j ), water_density );
             }
         } );
 }

@@ -54,36 +54,31 @@ void scatterMassMomentumForce(
     const auto sums = scatter.handle();
     using F = DryNodeField;
     const int ny1 = grid.ny + 1;
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto sigma_p = unmanaged( pv.sigma_p );
-    const auto load_p = unmanaged( pv.load_p );
+    const auto points = unmanaged( pv );
     const auto loads = unmanaged( load_force );
 
     forEachPointStencil(
         "mpm::p2g_mass_momentum_force", exec_space, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
-
-            const auto node = sums.access();
-            const double m = m_p( p );
-            const double vol = vol_p( p );
-            const double s_xx = sigma_p( p, 0 );
-            const double s_yy = sigma_p( p, 1 );
-            const double s_xy = sigma_p( p, 2 );
-            const int load = load_p( p );
+            const double m = points.m_p( p );
+            const double vol = points.vol_p( p );
+            const double s_xx = points.sigma_p( p, 0 );
+            const double s_yy = points.sigma_p( p, 1 );
+            const double s_xy = points.sigma_p( p, 2 );
+            const int load = points.load_p( p );
             const double f_x =
                 m * gravity_x + ( load >= 0 ? loads( load, 0 ) : 0.0 );
             const double f_y =
                 m * gravity_y + ( load >= 0 ? loads( load, 1 ) : 0.0 );
+            const auto node = sums.access();
             for ( int k = 0; k < 4; ++k )
             {
                 const int n = nodeIndex( ci + ( k & 1 ), cj + ( k >> 1 ), ny1 );
                 node.touch( n );
                 node.add( n, F::m, w[k] * m );
-                node.add( n, F::p_x, w[k] * m * v_p( p, 0 ) );
-                node.add( n, F::p_y, w[k] * m * v_p( p, 1 ) );
+                node.add( n, F::p_x, w[k] * m * points.v_p( p, 0 ) );
+                node.add( n, F::p_y, w[k] * m * points.v_p( p, 1 ) );
                 node.add( n, F::f_x,
                           w[k] * f_x -
                               vol * ( s_xx * dwdx[k] + s_xy * dwdy[k] ) );

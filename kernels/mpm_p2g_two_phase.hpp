@@ -73,17 +73,8 @@ void scatterTwoPhase(
     const auto sums = scatter.handle();
     using F = TwoPhaseNodeField;
     const int ny1 = grid.ny + 1;
-    const auto v_s_p = unmanaged( pv.v_p );
-    const auto m_s_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto sigma_p = unmanaged( pv.sigma_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto p_w_p = unmanaged( wv.p_w_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto k_rel_p = unmanaged( wv.k_rel_p );
-    const auto v_w_p = unmanaged( wv.v_w_p );
-    const auto load_p = unmanaged( pv.load_p );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
     const auto loads = unmanaged( load_force );
 
     forEachPointStencil(
@@ -91,24 +82,29 @@ void scatterTwoPhase(
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
 
-            const double sigma_eff[3] = { sigma_p( p, 0 ), sigma_p( p, 1 ),
-                                          sigma_p( p, 2 ) };
+            const double sigma_eff[3] = { points.sigma_p( p, 0 ),
+                                          points.sigma_p( p, 1 ),
+                                          points.sigma_p( p, 2 ) };
+            const int load_index = points.load_p( p );
             double load[2] = { 0.0, 0.0 };
-            if ( load_p( p ) >= 0 )
+            if ( load_index >= 0 )
             {
-                load[0] = loads( load_p( p ), 0 );
-                load[1] = loads( load_p( p ), 1 );
+                load[0] = loads( load_index, 0 );
+                load[1] = loads( load_index, 1 );
             }
-            const double v_s[2] = { v_s_p( p, 0 ), v_s_p( p, 1 ) };
-            const double v_w[2] = { v_w_p( p, 0 ), v_w_p( p, 1 ) };
+            const double v_s[2] = { points.v_p( p, 0 ), points.v_p( p, 1 ) };
+            const double v_w[2] = { water_points.v_w_p( p, 0 ),
+                                    water_points.v_w_p( p, 1 ) };
             const double g[2] = { gravity_x, gravity_y };
+            const double S = water_points.S_p( p );
             const physics::TwoPhasePoint point = physics::twoPhasePoint(
-                vol_p( p ), n_p( p ), S_p( p ), p_w_p( p ), m_s_p( p ),
-                sigma_eff,
-                materials[material_p( p )].permeability * k_rel_p( p ), v_s,
-                v_w, g, load, water.density );
+                points.vol_p( p ), water_points.n_p( p ), S,
+                water_points.p_w_p( p ), points.m_p( p ), sigma_eff,
+                materials[points.material_p( p )].permeability *
+                    water_points.k_rel_p( p ),
+                v_s, v_w, g, load, water.density );
             base.addPoint( ci, cj, w, point.vol, point.m_s + point.m_w,
-                           sigma_eff, S_p( p ), point.p_w );
+                           sigma_eff, S, point.p_w );
 
             const auto node = sums.access();
             for ( int k = 0; k < 4; ++k )

@@ -27,16 +27,15 @@ void forEachPointStencil( const char* label, const ExecSpace& exec_space,
                           const ParticleViews<ExecSpace>& pv,
                           const physics::GridGeometry& grid, const Body& body )
 {
-    const auto x_p = unmanaged( pv.x_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     Kokkos::parallel_for(
         label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
+            if ( points.status_p( p ) != point_active )
                 return;
             PointStencil stencil;
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), stencil.ci, stencil.cj,
-                          stencil.w, stencil.dwdx, stencil.dwdy );
+            grid.weights( points.x_p( p, 0 ), points.x_p( p, 1 ), stencil.ci,
+                          stencil.cj, stencil.w, stencil.dwdx, stencil.dwdy );
             body( p, stencil );
         } );
 }

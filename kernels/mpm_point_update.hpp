@@ -53,12 +53,7 @@ PointUpdateReport updatePoints(
     const WaveSpeed& wave_speed, const bool cfl_limit = true )
 {
     const PointSoundness<ExecSpace> sound( pv, wv );
-    const auto x_p = unmanaged( pv.x_p );
-    const auto du_p = unmanaged( pv.du_p );
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto status_p = unmanaged( pv.status_p );
+    const auto points = unmanaged( pv );
     const double cell_size = grid.h;
     const int none = pv.size();
     StepDiagnostics d{ 0.0, 0.0, 0.0, 0.0, none };
@@ -82,10 +77,10 @@ PointUpdateReport updatePoints(
                                 ? ( group + 1 ) * GroupSize
                                 : none;
             for ( int q = group * GroupSize; q < end; ++q )
-                if ( status_p( q ) == point_active )
+                if ( points.status_p( q ) == point_active )
                 {
                     p[count] = q;
-                    params[count] = &materials[material_p( q )];
+                    params[count] = &materials[points.material_p( q )];
                     ++count;
                 }
             if ( count == 0 )
@@ -99,11 +94,11 @@ PointUpdateReport updatePoints(
             for ( int l = 0; l < count; ++l )
             {
                 const int q = p[l];
-                if ( movePoint( q, x_p, du_p, grid ) )
+                if ( movePoint( q, points.x_p, points.du_p, grid ) )
                 {
                     if ( remove_outside )
                     {
-                        status_p( q ) = point_removed;
+                        points.status_p( q ) = point_removed;
                         ++removed;
                         continue;
                     }
@@ -112,18 +107,13 @@ PointUpdateReport updatePoints(
                 }
                 // Diagnostics of the new state.
                 if ( cfl_limit )
-                {
-                    const double c = wave_speed( q, *params[l] );
-                    const double dt = physics::pointTimeStep(
-                        cell_size, c, v_p( q, 0 ), v_p( q, 1 ) );
-                    dt_min = dt < dt_min ? dt : dt_min;
-                    c_max = c > c_max ? c : c_max;
-                }
-                energy +=
-                    0.5 * m_p( q ) *
-                    ( v_p( q, 0 ) * v_p( q, 0 ) + v_p( q, 1 ) * v_p( q, 1 ) );
-                const double speed2 =
-                    v_p( q, 0 ) * v_p( q, 0 ) + v_p( q, 1 ) * v_p( q, 1 );
+                    addPointLimit( wave_speed, q, *params[l], cell_size, dt_min,
+                                   c_max );
+                energy += 0.5 * points.m_p( q ) *
+                          ( points.v_p( q, 0 ) * points.v_p( q, 0 ) +
+                            points.v_p( q, 1 ) * points.v_p( q, 1 ) );
+                const double speed2 = points.v_p( q, 0 ) * points.v_p( q, 0 ) +
+                                      points.v_p( q, 1 ) * points.v_p( q, 1 );
                 if ( !sound( q, speed2 ) )
                     first_unsound = q < first_unsound ? q : first_unsound;
                 else
@@ -297,13 +287,7 @@ PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
             pv, no_water, gv, WaterGridViews<ExecSpace>(), 0.0, bbar,
             BaseCellAccess<ExecSpace>( BaseCells<ExecSpace>(), gv.geometry ) ),
         StressPointUpdate<ExecSpace>( pv, dt ) };
-    const auto m_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto wave_speed =
-        KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
-    {
-        return physics::waveSpeedDry( params, m_p( p ), vol_p( p ) );
-    };
+    const DryWaveSpeed<ExecSpace> wave_speed( pv );
     return updatePoints<1>( "mpm::update_points_dry", exec_space, pv, no_water,
                             materials, gv.geometry, remove_outside,
                             update_states, wave_speed );
@@ -360,16 +344,7 @@ PointUpdateReport updatePointsTwoPhase(
         StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar,
                                          base ),
         pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
-    const auto m_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto wave_speed =
-        KOKKOS_LAMBDA( const int p, const physics::MaterialParams& params )
-    {
-        return physics::waveSpeedTwoPhase( params, water, m_p( p ), vol_p( p ),
-                                           n_p( p ), S_p( p ) );
-    };
+    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water );
     return updatePoints<PorePressureUpdate::lanes>(
         "mpm::update_points_two_phase", exec_space, pv, wv, materials,
         gv.geometry, remove_outside, update_states, wave_speed, cfl_limit );

@@ -19,46 +19,29 @@ struct WaveSpeedLimit
 };
 
 //---------------------------------------------------------------------------//
-/*!
-  \brief CFL reduction: the P-wave speed of each point,
-  c_p = sqrt(E_c / rho_p), rho_p = m_p / vol_p, gives the stable step
-  h / (c_p + |v_p|) (Courant number 1); returns its minimum and max c_p.
-*/
+//! The fastest wave of a dry point: the P wave, c_p = sqrt(E_c / rho_p),
+//! rho_p = m_p / vol_p (physics::waveSpeedDry).
 template <class ExecSpace>
-WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
-                                 const ParticleViews<ExecSpace>& pv,
-                                 const physics::MaterialTable& materials,
-                                 const double cell_size )
+struct DryWaveSpeed
 {
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto status_p = unmanaged( pv.status_p );
-    WaveSpeedLimit limit{ 0.0, 0.0 };
-    Kokkos::parallel_reduce(
-        "mpm::critical_time_step",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
-            if ( status_p( p ) != point_active )
-                return;
-            const double c = physics::waveSpeedDry( materials[material_p( p )],
-                                                    m_p( p ), vol_p( p ) );
-            const double dt = physics::pointTimeStep( cell_size, c, v_p( p, 0 ),
-                                                      v_p( p, 1 ) );
-            dt_min = dt < dt_min ? dt : dt_min;
-            c_max = c > c_max ? c : c_max;
-        },
-        Kokkos::Min<double>( limit.dt_limit ),
-        Kokkos::Max<double>( limit.max_wave_speed ) );
-    return limit;
-}
+    typename ParticleViews<ExecSpace>::unmanaged_type points;
 
-//---------------------------------------------------------------------------//
+    explicit DryWaveSpeed( const ParticleViews<ExecSpace>& pv )
+        : points( unmanaged( pv ) )
+    {
+    }
+
+    KOKKOS_INLINE_FUNCTION double
+    operator()( const int p, const physics::MaterialParams& params ) const
+    {
+        return physics::waveSpeedDry( params, points.m_p( p ),
+                                      points.vol_p( p ) );
+    }
+};
+
 /*!
-  \brief CFL reduction of a two-phase scene: with the drag implicit the
-  limit is the fastest wave, the undrained mixture wave or the pore-water
-  wave of each point (physics::twoPhaseWaveSpeed), h / (c_p + |v_s|).
+  \brief The fastest wave of a two-phase point: with the drag implicit, the
+  undrained mixture wave or the pore-water wave (physics::waveSpeedTwoPhase).
   The unsaturated storage dS/dp_w is left out (the stiffest fluid state):
   a point near saturation can re-wet within a step, and its fluid
   stiffness then jumps by orders of magnitude (Liakopoulos: 100-fold
@@ -66,37 +49,94 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
   does not survive.
 */
 template <class ExecSpace>
+struct TwoPhaseWaveSpeed
+{
+    typename ParticleViews<ExecSpace>::unmanaged_type points;
+    typename WaterParticleViews<ExecSpace>::unmanaged_type water_points;
+    physics::WaterParams water;
+
+    TwoPhaseWaveSpeed( const ParticleViews<ExecSpace>& pv,
+                       const WaterParticleViews<ExecSpace>& wv,
+                       const physics::WaterParams& water_params )
+        : points( unmanaged( pv ) )
+        , water_points( unmanaged( wv ) )
+        , water( water_params )
+    {
+    }
+
+    KOKKOS_INLINE_FUNCTION double
+    operator()( const int p, const physics::MaterialParams& params ) const
+    {
+        return physics::waveSpeedTwoPhase(
+            params, water, points.m_p( p ), points.vol_p( p ),
+            water_points.n_p( p ), water_points.S_p( p ) );
+    }
+};
+
+//! Adds point p's CFL limit h / (c_p + |v_p|) (Courant number 1,
+//! physics::pointTimeStep) with c_p = wave_speed(p, params) to the
+//! reduction's minimum step dt_min and largest wave speed c_max.
+template <class WaveSpeed>
+KOKKOS_INLINE_FUNCTION void
+addPointLimit( const WaveSpeed& wave_speed, const int p,
+               const physics::MaterialParams& params, const double cell_size,
+               double& dt_min, double& c_max )
+{
+    const double c = wave_speed( p, params );
+    const double dt =
+        physics::pointTimeStep( cell_size, c, wave_speed.points.v_p( p, 0 ),
+                                wave_speed.points.v_p( p, 1 ) );
+    dt_min = dt < dt_min ? dt : dt_min;
+    c_max = c > c_max ? c : c_max;
+}
+
+//---------------------------------------------------------------------------//
+//! CFL reduction over the active points (addPointLimit): the minimum of
+//! their stable steps and the largest wave speed.
+template <class ExecSpace, class WaveSpeed>
+WaveSpeedLimit
+pointWaveSpeedLimit( const char* label, const ExecSpace& exec_space,
+                     const ParticleViews<ExecSpace>& pv,
+                     const physics::MaterialTable& materials,
+                     const double cell_size, const WaveSpeed& wave_speed )
+{
+    const auto points = unmanaged( pv );
+    WaveSpeedLimit limit{ 0.0, 0.0 };
+    Kokkos::parallel_reduce(
+        label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
+            if ( points.status_p( p ) == point_active )
+                addPointLimit( wave_speed, p, materials[points.material_p( p )],
+                               cell_size, dt_min, c_max );
+        },
+        Kokkos::Min<double>( limit.dt_limit ),
+        Kokkos::Max<double>( limit.max_wave_speed ) );
+    return limit;
+}
+
+//! CFL reduction of a dry scene (DryWaveSpeed).
+template <class ExecSpace>
+WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
+                                 const ParticleViews<ExecSpace>& pv,
+                                 const physics::MaterialTable& materials,
+                                 const double cell_size )
+{
+    return pointWaveSpeedLimit( "mpm::critical_time_step", exec_space, pv,
+                                materials, cell_size,
+                                DryWaveSpeed<ExecSpace>( pv ) );
+}
+
+//! CFL reduction of a two-phase scene (TwoPhaseWaveSpeed).
+template <class ExecSpace>
 WaveSpeedLimit criticalTimeStepTwoPhase(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double cell_size )
 {
-    const auto v_p = unmanaged( pv.v_p );
-    const auto m_p = unmanaged( pv.m_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto material_p = unmanaged( pv.material_p );
-    const auto status_p = unmanaged( pv.status_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto S_p = unmanaged( wv.S_p );
-    WaveSpeedLimit limit{ 0.0, 0.0 };
-    Kokkos::parallel_reduce(
-        "mpm::critical_time_step_two_phase",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& dt_min, double& c_max ) {
-            if ( status_p( p ) != point_active )
-                return;
-            const double c = physics::waveSpeedTwoPhase(
-                materials[material_p( p )], water, m_p( p ), vol_p( p ),
-                n_p( p ), S_p( p ) );
-            const double dt = physics::pointTimeStep( cell_size, c, v_p( p, 0 ),
-                                                      v_p( p, 1 ) );
-            dt_min = dt < dt_min ? dt : dt_min;
-            c_max = c > c_max ? c : c_max;
-        },
-        Kokkos::Min<double>( limit.dt_limit ),
-        Kokkos::Max<double>( limit.max_wave_speed ) );
-    return limit;
+    return pointWaveSpeedLimit( "mpm::critical_time_step_two_phase", exec_space,
+                                pv, materials, cell_size,
+                                TwoPhaseWaveSpeed<ExecSpace>( pv, wv, water ) );
 }
 
 } // namespace mpm

@@ -3,6 +3,7 @@
 
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_node_loop.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_point_stencil.hpp>
 #include <mpm_scatter.hpp>
@@ -103,44 +104,41 @@ void velocityGradientCellSums(
     const auto sums = scatter.handle();
     const bool two_phase = wv.allocated();
     const auto grid = gv.geometry;
-    const auto v_s_i = unmanaged( gv.v_i );
-    const auto v_w_i = unmanaged( wg.v_w_i );
-    const auto m_w_i = unmanaged( wg.m_w_i );
-    const auto vol_i = unmanaged( wg.vol_i );
-    const auto x_p = unmanaged( pv.x_p );
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto grad_v_p = unmanaged( pv.grad_v_p );
-    const auto div_v_w_p = unmanaged( wv.div_v_w_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto S_p = unmanaged( wv.S_p );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
 
     forEachPointStencil(
         "mpm::velocity_gradient_cell_sums", exec_space, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             double L[2][2];
-            gradientAt( ci, cj, dwdx, dwdy, v_s_i, L );
+            gradientAt( ci, cj, dwdx, dwdy, nodes.v_i, L );
             for ( int a = 0; a < 2; ++a )
                 for ( int b = 0; b < 2; ++b )
-                    grad_v_p( p, a, b ) = L[a][b];
+                    points.grad_v_p( p, a, b ) = L[a][b];
             double div_v_w = 0.0;
             if ( two_phase )
             {
-                div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i,
-                                             m_w_i, vol_i, water_density,
-                                             n_p( p ) * S_p( p ), L );
-                div_v_w_p( p ) = div_v_w;
+                div_v_w = waterDivergenceAt(
+                    ci, cj, dwdx, dwdy, nodes.v_i, water_nodes.v_w_i,
+                    water_nodes.m_w_i, water_nodes.vol_i, water_density,
+                    water_points.n_p( p ) * water_points.S_p( p ), L );
+                water_points.div_v_w_p( p ) = div_v_w;
             }
             // Points on the grid's far edges belong to no cell.
             int cell_i, cell_j;
-            if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), cell_i, cell_j ) )
+            if ( !grid.cellOf( points.x_p( p, 0 ), points.x_p( p, 1 ), cell_i,
+                               cell_j ) )
                 return;
             const int c = cell_i * grid.ny + cell_j;
+            const double vol = points.vol_p( p );
             const auto cell = sums.access();
-            cell.add( c, CellField::vol, vol_p( p ) );
-            cell.add( c, CellField::dvol, vol_p( p ) * ( L[0][0] + L[1][1] ) );
+            cell.add( c, CellField::vol, vol );
+            cell.add( c, CellField::dvol, vol * ( L[0][0] + L[1][1] ) );
             if ( two_phase )
-                cell.add( c, CellField::div_w, vol_p( p ) * div_v_w );
+                cell.add( c, CellField::div_w, vol * div_v_w );
         } );
 }
 
@@ -159,24 +157,19 @@ void takeCellSums(
 {
     const auto sums = scatter.handle();
     const bool two_phase = wg.div_w_c.extent( 0 ) > 0;
-    const auto vol_c = unmanaged( gv.vol_c );
-    const auto dvol_c = unmanaged( gv.dvol_c );
+    const auto nodes = unmanaged( gv );
     const auto div_w_c = unmanaged( wg.div_w_c );
-    const auto active_i = unmanaged( gv.active_i );
     const int nx = gv.geometry.nx;
     const int ny = gv.geometry.ny;
 
-    Kokkos::parallel_for(
-        "mpm::take_cell_sums",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, gv.num_active ),
-        KOKKOS_LAMBDA( const int a ) {
-            const int i = active_i( a ) / ( ny + 1 );
-            const int j = active_i( a ) % ( ny + 1 );
+    forEachActiveNode(
+        "mpm::take_cell_sums", exec_space, gv,
+        KOKKOS_LAMBDA( const int, const int i, const int j ) {
             if ( i >= nx || j >= ny )
                 return;
             const int c = i * ny + j;
-            vol_c( i, j ) = sums.take( c, CellField::vol );
-            dvol_c( i, j ) = sums.take( c, CellField::dvol );
+            nodes.vol_c( i, j ) = sums.take( c, CellField::vol );
+            nodes.dvol_c( i, j ) = sums.take( c, CellField::dvol );
             if ( two_phase )
                 div_w_c( i, j ) = sums.take( c, CellField::div_w );
         } );

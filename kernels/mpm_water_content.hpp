@@ -28,19 +28,17 @@ WaterContent waterContent( const ExecSpace& exec_space,
     WaterContent content;
     if ( !wv.allocated() )
         return content;
-    const auto vol_p = unmanaged( pv.vol_p );
-    const auto status_p = unmanaged( pv.status_p );
-    const auto n_p = unmanaged( wv.n_p );
-    const auto S_p = unmanaged( wv.S_p );
-    const auto p_w_p = unmanaged( wv.p_w_p );
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
     const double bulk_modulus = water.bulk_modulus;
     Kokkos::parallel_reduce(
         "mpm::water_content",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, double& active, double& removed ) {
             const double stored = physics::pointWaterVolume(
-                vol_p( p ), n_p( p ), S_p( p ), p_w_p( p ), bulk_modulus );
-            if ( status_p( p ) == point_active )
+                points.vol_p( p ), water_points.n_p( p ), water_points.S_p( p ),
+                water_points.p_w_p( p ), bulk_modulus );
+            if ( points.status_p( p ) == point_active )
                 active += stored;
             else
                 removed += stored;

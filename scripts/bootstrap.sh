@@ -13,9 +13,7 @@ CACHE_DIR="${RAINSLIDE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/rainslide}"
 KOKKOS_PREFIX="$CACHE_DIR/kokkos-$KOKKOS_VERSION-serial-openmp"
 
 log() { echo "[bootstrap] $*" >&2; }
-
-SUDO=""
-if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+source "$(dirname "${BASH_SOURCE[0]}")/apt_packages.sh"
 
 # --- 1. Debian packages -----------------------------------------------------
 PACKAGES=(
@@ -24,19 +22,7 @@ PACKAGES=(
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
     python3 python3-numpy python3-matplotlib python3-h5py
 )
-missing=()
-for p in "${PACKAGES[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-        missing+=("$p")
-    fi
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-    log "installing Debian packages: ${missing[*]}"
-    $SUDO apt-get update -qq >&2
-    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
-else
-    log "Debian packages present"
-fi
+install_debian_packages "Debian packages" "${PACKAGES[@]}"
 
 # --- 2. Kokkos 3.4.01 (Serial + OpenMP) from the trilinos source package ------
 if [ -f "$KOKKOS_PREFIX/lib/cmake/Kokkos/KokkosConfig.cmake" ] ||

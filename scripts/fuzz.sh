@@ -22,21 +22,8 @@ BUILD_DIR="${RAINSLIDE_FUZZ_BUILD_DIR:-$ROOT/build/fuzz}"
 log() { echo "[fuzz] $*" >&2; }
 
 # --- 1. clang and libFuzzer (idempotent) --------------------------------------
-SUDO=""
-if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
-missing=()
-for p in clang libclang-rt-14-dev cmake; do
-    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-        missing+=("$p")
-    fi
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-    log "installing Debian packages: ${missing[*]}"
-    $SUDO apt-get update -qq >&2
-    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
-else
-    log "clang and libFuzzer present"
-fi
+source "$ROOT/scripts/apt_packages.sh"
+install_debian_packages "clang and libFuzzer" clang libclang-rt-14-dev cmake
 if ! dpkg-query -W -f='${Status}' libtomlplusplus-dev 2>/dev/null | grep -q "install ok installed"; then
     "$ROOT/scripts/bootstrap.sh" >/dev/null # toml++ and the rest of the project's packages
 fi

@@ -50,7 +50,6 @@ import numpy as np
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 VERIFY = os.path.join(ROOT, "scripts", "verification")
 PYTHON = "/usr/bin/python3"
-G = 9.81                                  # as in scripts/verification/terzaghi.py
 TV_SNAPSHOTS = [0.05, 0.1, 0.2, 0.5, 1.0]
 
 # --------------------------------------------------------------------------- #
@@ -172,24 +171,10 @@ def set_stage_key(text, stage, key, value):
 
 
 def terzaghi_physics(case):
-    """c_v, H, p0/sigma etc. of a Terzaghi case (same formulas as the verification script)."""
-    mat = case["materials"][0]
-    water = case.get("water", {})
-    K_w = water.get("bulk_modulus_pa", 2.2e9)
-    rho_w = water.get("density_kg_per_m3", 1000.0)
-    mu = water.get("viscosity_pa_s", 1.0e-3)
-    E, nu, n, k = mat["youngs_modulus_pa"], mat["poisson_ratio"], mat["porosity"], mat["permeability_m2"]
-    E_c = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
-    m_v = 1.0 / E_c
-    K = k * rho_w * G / mu
-    c_v = K / (rho_w * G * (m_v + n / K_w))
-    poly = np.array(case["bodies"][0]["polygon_m"])
-    H = poly[:, 1].max() - poly[:, 1].min()
-    load = case["stages"][0]["loads"][0]
-    ramp = load.get("time_function", [[0.0, 1.0]])
-    t_ramp = ramp[-1][0] if len(ramp) > 1 else 0.0
-    return {"c_v": c_v, "H": H, "y_top": poly[:, 1].max(), "t_ramp": t_ramp,
-            "p0": abs(load["traction_pa"][1]) * m_v / (m_v + n / K_w)}
+    """c_v, H, y_top, t_ramp and p0 of a Terzaghi case (the verification
+    script's consolidation_parameters)."""
+    tz = load_module("terzaghi_verification", os.path.join(VERIFY, "terzaghi.py"))
+    return tz.consolidation_parameters(case)
 
 
 def terzaghi_case(base_text, p):

@@ -70,33 +70,30 @@ void printCheckSummary( const mpm::CaseConfig& config,
               << "  " << mpm::estimateSummary( estimate ) << "\n";
 }
 
-//! The budget options of `check` and `run`.
+//! The budget options of `check` and `run`: each a non-negative limit,
+//! 0 for none.
 void addBudgetOptions( CLI::App& command, mpm::RunBudget& budget )
 {
-    command
-        .add_option( "--max-steps", budget.max_steps,
-                     "refuse a case whose estimated steps exceed this "
-                     "(0 = no limit)" )
-        ->check( CLI::NonNegativeNumber )
-        ->capture_default_str();
-    command
-        .add_option( "--max-memory-gb", budget.max_memory_gb,
-                     "refuse a case whose estimated memory exceeds this many "
-                     "GB (0 = no limit)" )
-        ->check( CLI::NonNegativeNumber )
-        ->capture_default_str();
-    command
-        .add_option( "--max-output-gb", budget.max_output_gb,
-                     "refuse a case whose estimated output exceeds this many "
-                     "GB (0 = no limit)" )
-        ->check( CLI::NonNegativeNumber )
-        ->capture_default_str();
-    command
-        .add_option( "--max-snapshots", budget.max_snapshots,
-                     "refuse a case that writes more snapshots (0 = no "
-                     "limit)" )
-        ->check( CLI::NonNegativeNumber )
-        ->capture_default_str();
+    const struct
+    {
+        const char* name;
+        double& value;
+        const char* help;
+    } options[] = {
+        { "--max-steps", budget.max_steps,
+          "refuse a case whose estimated steps exceed this" },
+        { "--max-memory-gb", budget.max_memory_gb,
+          "refuse a case whose estimated memory exceeds this many GB" },
+        { "--max-output-gb", budget.max_output_gb,
+          "refuse a case whose estimated output exceeds this many GB" },
+        { "--max-snapshots", budget.max_snapshots,
+          "refuse a case that writes more snapshots" } };
+    for ( const auto& option : options )
+        command
+            .add_option( option.name, option.value,
+                         std::string( option.help ) + " (0 = no limit)" )
+            ->check( CLI::NonNegativeNumber )
+            ->capture_default_str();
 }
 
 //! The --set option of `check` and `run` (repeatable).

@@ -2,9 +2,7 @@
 #include <mpm_test_fixtures.hpp>
 
 #include <mpm_g2p.hpp>
-#include <mpm_grid_update.hpp>
-#include <mpm_p2g.hpp>
-#include <mpm_point_update.hpp>
+#include <solver/mpm_dry_step.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_Random.hpp>
@@ -22,24 +20,23 @@ class Transfer : public ::testing::Test
 };
 TYPED_TEST_SUITE( Transfer, mpm_test::Backends, mpm_test::BackendName );
 
-// The dry step's kernels as Simulation::advanceDry calls them: the P2G
-// scatter into sums kept between steps, the grid update that takes them,
-// G2P with the remap scatter, the remap, and the last point loop.
+// The dry step's phases as Simulation::advanceDry runs them
+// (mpm::DryStepPhases: the P2G scatter into sums kept between steps, the
+// grid update that takes them, G2P with the remap scatter, the remap, the
+// last point loop), on the test's points, grid and material.
 template <class ExecSpace>
 struct DryStep
 {
     mpm::ParticleViews<ExecSpace> pv;
     mpm::GridViews<ExecSpace> gv;
-    mpm::DryNodeSums<ExecSpace> node_sums;
-    mpm::MomentumSums<ExecSpace> momentum_sums;
+    mpm::DryStepPhases<ExecSpace> phases;
     mpm::physics::MaterialTable materials;
 
     DryStep( const mpm::ParticleViews<ExecSpace>& points,
              const mpm::physics::GridGeometry& grid )
         : pv( points )
         , gv( grid )
-        , node_sums( "p2g_dry", grid.numNodes() )
-        , momentum_sums( "remap_dry", grid.numNodes() )
+        , phases( grid )
     {
         materials.materials[0] =
             mpm::physics::elasticParams( 1.0e7, 0.3, 1800.0 );
@@ -49,23 +46,20 @@ struct DryStep
     //! P2G and the grid update (their nodal m_i, p_i, f_i, v_i, dv_i).
     void scatterAndUpdateGrid( const double gravity_y, const double dt )
     {
-        mpm::scatterMassMomentumForce(
-            ExecSpace(), pv, gv.geometry, 0.0, gravity_y,
-            mpm::LoadForceView<ExecSpace>( "no_loads", 0 ), node_sums );
-        mpm::gridUpdateDry( ExecSpace(), gv, node_sums, dt, 0.0, 1.0 );
+        phases.scatter( ExecSpace(), pv, gv.geometry, 0.0, gravity_y,
+                        mpm::LoadForceView<ExecSpace>( "no_loads", 0 ) );
+        phases.updateGrid( ExecSpace(), gv, dt, 0.0, 1.0 );
     }
     //! G2P (with the remap scatter) and the remap.
     void gatherAndRemap( const double dt, const double flip_fraction )
     {
-        mpm::g2pVelocityRemap( ExecSpace(), pv, gv, dt, flip_fraction,
-                               momentum_sums );
-        mpm::remapVelocity( ExecSpace(), gv, momentum_sums );
+        phases.gatherAndRemap( ExecSpace(), pv, gv, dt, flip_fraction );
     }
     //! Velocity gradient, stress, positions and diagnostics.
     mpm::PointUpdateReport updatePoints( const double dt )
     {
-        return mpm::updatePointsDry( ExecSpace(), pv, gv, materials, dt, false,
-                                     false );
+        return phases.updatePoints( ExecSpace(), pv, gv, materials, dt, false,
+                                    false );
     }
 };
 
@@ -222,7 +216,8 @@ TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
     const auto x = hostCopy( pv.x_p );
     // G2P (PIC) and the point loop on the linear field (no remap: the
     // remap projects it, exact only for a uniform field).
-    mpm::g2pVelocityRemap( exec_space(), pv, gv, dt, 0.0, step.momentum_sums );
+    mpm::g2pVelocityRemap( exec_space(), pv, gv, dt, 0.0,
+                           step.phases.momentum_sums );
     step.updatePoints( dt );
 
     const auto x_new =

@@ -5,6 +5,9 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <string>
+#include <type_traits>
+
 namespace mpm
 {
 //! Device type built from an execution space. Typing every View with it keeps
@@ -26,10 +29,56 @@ using UnmanagedView =
   that took a fifth of a step of 40 points. The managed View must outlive
   the kernel (true for our synchronous host kernels).
 */
-template <class ViewType>
+template <class ViewType,
+          class = std::enable_if_t<Kokkos::is_view<ViewType>::value>>
 UnmanagedView<ViewType> unmanaged( const ViewType& view )
 {
     return view;
+}
+
+//! Allocates `view` as a new zeroed View labelled `name` of the given
+//! extents.
+template <class ViewType, class... Extents>
+void allocateView( ViewType& view, const std::string& name,
+                   const Extents... extents )
+{
+    view = ViewType( name, extents... );
+}
+
+//---------------------------------------------------------------------------//
+// View structs (ParticleViews, WaterParticleViews, GridViews,
+// WaterGridViews) list their Views once, in a static
+// forEachViewOf(f, structs...) that calls f(name, s.view...) with the same
+// View of each struct given, and name their unmanaged twin unmanaged_type.
+
+//! Calls f(name, view) for every View of the struct s (s may be const).
+template <class Struct, class F>
+void forEachView( Struct& s, F&& f )
+{
+    std::remove_const_t<Struct>::forEachViewOf( f, s );
+}
+
+//! Allocates every View of s with the given extents, labelled by its name.
+template <class Struct, class... Extents>
+void allocateViews( Struct& s, const Extents... extents )
+{
+    Struct::forEachViewOf( [&]( const char* name, auto& view )
+                           { allocateView( view, name, extents... ); },
+                           s );
+}
+
+/*!
+  \brief The unmanaged twin of a View struct, for kernel closures (see
+  unmanaged(view)): the same Views without reference counting. Plain
+  members are not copied (GridViews has its own overload).
+*/
+template <class Struct, class = typename Struct::unmanaged_type>
+typename Struct::unmanaged_type unmanaged( const Struct& s )
+{
+    typename Struct::unmanaged_type u;
+    Struct::forEachViewOf(
+        []( const char*, auto& from, auto& to ) { to = from; }, s, u );
+    return u;
 }
 
 //! True if a node's flags fix both directions of its solid.

@@ -6,24 +6,49 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <string>
+
 namespace mpm
 {
+//---------------------------------------------------------------------------//
+/*!
+  \brief Allocates every View of a grid struct by its name: a cell View
+  (suffix _c) has nx x ny entries, a node View (suffix _i)
+  (nx + 1) x (ny + 1), a list of nodes (rank 1) one entry per node.
+*/
+template <class Struct>
+void allocateGridViews( Struct& s, const physics::GridGeometry& grid )
+{
+    const int nodes_x = grid.nx + 1;
+    const int nodes_y = grid.ny + 1;
+    const auto allocate = [&]( const std::string& name, auto& view )
+    {
+        if constexpr ( std::decay_t<decltype( view )>::rank == 1 )
+            allocateView( view, name, nodes_x * nodes_y );
+        else if ( name.compare( name.size() - 2, 2, "_c" ) == 0 )
+            allocateView( view, name, grid.nx, grid.ny );
+        else
+            allocateView( view, name, nodes_x, nodes_y );
+    };
+    Struct::forEachViewOf( allocate, s );
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Fields on the nodes (suffix _i) and cells (suffix _c) of a
   structured grid of square 4-node cells. Nodes are indexed (i, j),
   i along x, j along y.
 */
-template <class ExecSpace>
+template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct GridViews
 {
     using execution_space = ExecSpace;
     using memory_space = typename ExecSpace::memory_space;
     using device_type = DeviceType<ExecSpace>;
-    using scalar_view = Kokkos::View<double**, device_type>;
-    using vector_view = Kokkos::View<double** [2], device_type>;
-    using int_view = Kokkos::View<int**, device_type>;
-    using index_view = Kokkos::View<int*, device_type>;
+    using scalar_view = Kokkos::View<double**, device_type, MemoryTraits>;
+    using vector_view = Kokkos::View<double** [2], device_type, MemoryTraits>;
+    using int_view = Kokkos::View<int**, device_type, MemoryTraits>;
+    using index_view = Kokkos::View<int*, device_type, MemoryTraits>;
 
     physics::GridGeometry geometry;
     scalar_view m_i;     //!< nodal mass, kg
@@ -39,20 +64,53 @@ struct GridViews
 
     GridViews() = default;
 
+    //! Allocates every View on the nodes (on the cells: the _c Views) of
+    //! `grid`.
     explicit GridViews( const physics::GridGeometry& grid )
         : geometry( grid )
-        , m_i( "m_i", grid.nx + 1, grid.ny + 1 )
-        , p_i( "p_i", grid.nx + 1, grid.ny + 1 )
-        , f_i( "f_i", grid.nx + 1, grid.ny + 1 )
-        , v_i( "v_i", grid.nx + 1, grid.ny + 1 )
-        , dv_i( "dv_i", grid.nx + 1, grid.ny + 1 )
-        , flags_i( "flags_i", grid.nx + 1, grid.ny + 1 )
-        , active_i( "active_i", ( grid.nx + 1 ) * ( grid.ny + 1 ) )
-        , vol_c( "vol_c", grid.nx, grid.ny )
-        , dvol_c( "dvol_c", grid.nx, grid.ny )
     {
+        allocateGridViews( *this, grid );
+    }
+
+    using unmanaged_type = GridViews<ExecSpace, Kokkos::MemoryUnmanaged>;
+
+    //! Calls f(name, gv.view...) for every View (the checkpoint's names).
+    template <class F, class... Views>
+    static void forEachViewOf( F&& f, Views&... gv )
+    {
+        f( "m_i", gv.m_i... );
+        f( "p_i", gv.p_i... );
+        f( "f_i", gv.f_i... );
+        f( "v_i", gv.v_i... );
+        f( "dv_i", gv.dv_i... );
+        f( "flags_i", gv.flags_i... );
+        f( "active_i", gv.active_i... );
+        f( "vol_c", gv.vol_c... );
+        f( "dvol_c", gv.dvol_c... );
     }
 };
+
+//---------------------------------------------------------------------------//
+//! Calls f(name, view) for every View of GridViews (forEachView).
+template <class Views, class F>
+void forEachGridView( Views& gv, F&& f )
+{
+    forEachView( gv, f );
+}
+
+//! The same Views, geometry and active-node count, unmanaged, for kernel
+//! closures (see unmanaged(view)).
+template <class ExecSpace>
+GridViews<ExecSpace, Kokkos::MemoryUnmanaged>
+unmanaged( const GridViews<ExecSpace>& gv )
+{
+    GridViews<ExecSpace, Kokkos::MemoryUnmanaged> u;
+    GridViews<ExecSpace>::forEachViewOf(
+        []( const char*, auto& from, auto& to ) { to = from; }, gv, u );
+    u.geometry = gv.geometry;
+    u.num_active = gv.num_active;
+    return u;
+}
 
 } // namespace mpm
 

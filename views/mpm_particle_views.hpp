@@ -14,17 +14,18 @@ namespace mpm
   Naming: <quantity>_p (p = point). Vectors are (x, y); stress and strain
   are (xx, yy, xy, zz) with tensor shear components, tension positive.
 */
-template <class ExecSpace>
+template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct ParticleViews
 {
     using execution_space = ExecSpace;
     using memory_space = typename ExecSpace::memory_space;
     using device_type = DeviceType<ExecSpace>;
-    using scalar_view = Kokkos::View<double*, device_type>;
-    using vector_view = Kokkos::View<double* [2], device_type>;
-    using tensor_view = Kokkos::View<double* [4], device_type>;
-    using gradient_view = Kokkos::View<double* [2][2], device_type>;
-    using int_view = Kokkos::View<int*, device_type>;
+    using scalar_view = Kokkos::View<double*, device_type, MemoryTraits>;
+    using vector_view = Kokkos::View<double* [2], device_type, MemoryTraits>;
+    using tensor_view = Kokkos::View<double* [4], device_type, MemoryTraits>;
+    using gradient_view =
+        Kokkos::View<double* [2][2], device_type, MemoryTraits>;
+    using int_view = Kokkos::View<int*, device_type, MemoryTraits>;
 
     vector_view x_p;         //!< position, m
     vector_view x0_p;        //!< reference position for displacement, m
@@ -44,24 +45,36 @@ struct ParticleViews
 
     ParticleViews() = default;
 
+    //! Allocates every View with num_points entries; no point carries a
+    //! load.
     explicit ParticleViews( const int num_points )
-        : x_p( "x_p", num_points )
-        , x0_p( "x0_p", num_points )
-        , v_p( "v_p", num_points )
-        , du_p( "du_p", num_points )
-        , m_p( "m_p", num_points )
-        , vol_p( "vol_p", num_points )
-        , vol0_p( "vol0_p", num_points )
-        , sigma_p( "sigma_p", num_points )
-        , eps_p( "eps_p", num_points )
-        , eps_p_bar_p( "eps_p_bar_p", num_points )
-        , grad_v_p( "grad_v_p", num_points )
-        , material_p( "material_p", num_points )
-        , id_p( "id_p", num_points )
-        , status_p( "status_p", num_points )
-        , load_p( "load_p", num_points )
     {
+        allocateViews( *this, num_points );
         Kokkos::deep_copy( load_p, -1 );
+    }
+
+    using unmanaged_type = ParticleViews<ExecSpace, Kokkos::MemoryUnmanaged>;
+
+    //! Calls f(name, pv.view...) for every View, named as the checkpoint
+    //! and the point-field registry (records/mpm_point_fields.hpp) name it.
+    template <class F, class... Views>
+    static void forEachViewOf( F&& f, Views&... pv )
+    {
+        f( "x_p", pv.x_p... );
+        f( "x0_p", pv.x0_p... );
+        f( "v_p", pv.v_p... );
+        f( "du_p", pv.du_p... );
+        f( "m_p", pv.m_p... );
+        f( "vol_p", pv.vol_p... );
+        f( "vol0_p", pv.vol0_p... );
+        f( "sigma_p", pv.sigma_p... );
+        f( "eps_p", pv.eps_p... );
+        f( "eps_p_bar_p", pv.eps_p_bar_p... );
+        f( "grad_v_p", pv.grad_v_p... );
+        f( "material_p", pv.material_p... );
+        f( "id_p", pv.id_p... );
+        f( "status_p", pv.status_p... );
+        f( "load_p", pv.load_p... );
     }
 
     int size() const { return static_cast<int>( x_p.extent( 0 ) ); }
@@ -72,27 +85,11 @@ template <class ExecSpace>
 using LoadForceView = Kokkos::View<double* [2], DeviceType<ExecSpace>>;
 
 //---------------------------------------------------------------------------//
-//! Calls f(name, view) for every View of ParticleViews, named as the
-//! checkpoint and the point-field registry (records/mpm_point_fields.hpp)
-//! name it. Views may be const.
+//! Calls f(name, view) for every View of ParticleViews (forEachView).
 template <class Views, class F>
 void forEachParticleView( Views& pv, F&& f )
 {
-    f( "x_p", pv.x_p );
-    f( "x0_p", pv.x0_p );
-    f( "v_p", pv.v_p );
-    f( "du_p", pv.du_p );
-    f( "m_p", pv.m_p );
-    f( "vol_p", pv.vol_p );
-    f( "vol0_p", pv.vol0_p );
-    f( "sigma_p", pv.sigma_p );
-    f( "eps_p", pv.eps_p );
-    f( "eps_p_bar_p", pv.eps_p_bar_p );
-    f( "grad_v_p", pv.grad_v_p );
-    f( "material_p", pv.material_p );
-    f( "id_p", pv.id_p );
-    f( "status_p", pv.status_p );
-    f( "load_p", pv.load_p );
+    forEachView( pv, f );
 }
 
 } // namespace mpm

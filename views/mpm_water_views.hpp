@@ -2,6 +2,7 @@
 #define MPM_WATER_VIEWS_HPP
 
 #include <mpm_device_type.hpp>
+#include <mpm_grid_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -13,13 +14,13 @@ namespace mpm
   \brief Pore-water fields of the material points; allocated only for
   two-phase scenes. p_w is compression positive (suction s = -p_w).
 */
-template <class ExecSpace>
+template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct WaterParticleViews
 {
     using device_type = DeviceType<ExecSpace>;
-    using scalar_view = Kokkos::View<double*, device_type>;
-    using vector_view = Kokkos::View<double* [2], device_type>;
-    using int_view = Kokkos::View<int*, device_type>;
+    using scalar_view = Kokkos::View<double*, device_type, MemoryTraits>;
+    using vector_view = Kokkos::View<double* [2], device_type, MemoryTraits>;
+    using int_view = Kokkos::View<int*, device_type, MemoryTraits>;
 
     scalar_view p_w_p;     //!< pore-water pressure, Pa
     scalar_view S_p;       //!< degree of saturation
@@ -42,19 +43,30 @@ struct WaterParticleViews
 
     WaterParticleViews() = default;
 
+    //! Allocates every View with num_points entries.
     explicit WaterParticleViews( const int num_points )
-        : p_w_p( "p_w_p", num_points )
-        , S_p( "S_p", num_points )
-        , dS_dp_p( "dS_dp_p", num_points )
-        , k_rel_p( "k_rel_p", num_points )
-        , n_p( "n_p", num_points )
-        , v_w_p( "v_w_p", num_points )
-        , div_v_w_p( "div_v_w_p", num_points )
-        , p_w_condition_p( "p_w_condition_p", num_points )
-        , inflow_p( "inflow_p", num_points )
-        , p_w_held_p( "p_w_held_p", num_points )
-        , inflow_weight_p( "inflow_weight_p", num_points )
     {
+        allocateViews( *this, num_points );
+    }
+
+    using unmanaged_type =
+        WaterParticleViews<ExecSpace, Kokkos::MemoryUnmanaged>;
+
+    //! Calls f(name, wv.view...) for every View (the checkpoint's names).
+    template <class F, class... Views>
+    static void forEachViewOf( F&& f, Views&... wv )
+    {
+        f( "p_w_p", wv.p_w_p... );
+        f( "S_p", wv.S_p... );
+        f( "dS_dp_p", wv.dS_dp_p... );
+        f( "k_rel_p", wv.k_rel_p... );
+        f( "n_p", wv.n_p... );
+        f( "v_w_p", wv.v_w_p... );
+        f( "div_v_w_p", wv.div_v_w_p... );
+        f( "p_w_condition_p", wv.p_w_condition_p... );
+        f( "inflow_p", wv.inflow_p... );
+        f( "p_w_held_p", wv.p_w_held_p... );
+        f( "inflow_weight_p", wv.inflow_weight_p... );
     }
 
     bool allocated() const { return p_w_p.extent( 0 ) > 0; }
@@ -66,13 +78,13 @@ struct WaterParticleViews
   phase and the mixture use GridViews (m_i = solid mass, p_i = solid
   momentum, f_i = mixture force).
 */
-template <class ExecSpace>
+template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct WaterGridViews
 {
     using device_type = DeviceType<ExecSpace>;
-    using scalar_view = Kokkos::View<double**, device_type>;
-    using vector_view = Kokkos::View<double** [2], device_type>;
-    using int_view = Kokkos::View<int**, device_type>;
+    using scalar_view = Kokkos::View<double**, device_type, MemoryTraits>;
+    using vector_view = Kokkos::View<double** [2], device_type, MemoryTraits>;
+    using int_view = Kokkos::View<int**, device_type, MemoryTraits>;
 
     scalar_view m_w_i;  //!< water mass sum N n S rho_w V, kg
     scalar_view vol_i;  //!< mixture volume sum N V, m^3
@@ -93,37 +105,43 @@ struct WaterGridViews
 
     WaterGridViews() = default;
 
+    //! Allocates every View on the nodes (on the cells: div_w_c) of `grid`.
     explicit WaterGridViews( const physics::GridGeometry& grid )
-        : m_w_i( "m_w_i", grid.nx + 1, grid.ny + 1 )
-        , vol_i( "vol_i", grid.nx + 1, grid.ny + 1 )
-        , mv_w_i( "mv_w_i", grid.nx + 1, grid.ny + 1 )
-        , f_w_i( "f_w_i", grid.nx + 1, grid.ny + 1 )
-        , q_i( "q_i", grid.nx + 1, grid.ny + 1 )
-        , v_w_i( "v_w_i", grid.nx + 1, grid.ny + 1 )
-        , dv_w_i( "dv_w_i", grid.nx + 1, grid.ny + 1 )
-        , flags_w_i( "flags_w_i", grid.nx + 1, grid.ny + 1 )
-        , div_w_c( "div_w_c", grid.nx, grid.ny )
     {
+        allocateGridViews( *this, grid );
+    }
+
+    using unmanaged_type = WaterGridViews<ExecSpace, Kokkos::MemoryUnmanaged>;
+
+    //! Calls f(name, wg.view...) for every View (the checkpoint's names).
+    template <class F, class... Views>
+    static void forEachViewOf( F&& f, Views&... wg )
+    {
+        f( "m_w_i", wg.m_w_i... );
+        f( "vol_i", wg.vol_i... );
+        f( "mv_w_i", wg.mv_w_i... );
+        f( "f_w_i", wg.f_w_i... );
+        f( "q_i", wg.q_i... );
+        f( "v_w_i", wg.v_w_i... );
+        f( "dv_w_i", wg.dv_w_i... );
+        f( "flags_w_i", wg.flags_w_i... );
+        f( "div_w_c", wg.div_w_c... );
     }
 };
 
 //---------------------------------------------------------------------------//
-//! Calls f(name, view) for every View of WaterParticleViews (as
-//! forEachParticleView).
+//! Calls f(name, view) for every View of WaterParticleViews (forEachView).
 template <class Views, class F>
 void forEachWaterParticleView( Views& wv, F&& f )
 {
-    f( "p_w_p", wv.p_w_p );
-    f( "S_p", wv.S_p );
-    f( "dS_dp_p", wv.dS_dp_p );
-    f( "k_rel_p", wv.k_rel_p );
-    f( "n_p", wv.n_p );
-    f( "v_w_p", wv.v_w_p );
-    f( "div_v_w_p", wv.div_v_w_p );
-    f( "p_w_condition_p", wv.p_w_condition_p );
-    f( "inflow_p", wv.inflow_p );
-    f( "p_w_held_p", wv.p_w_held_p );
-    f( "inflow_weight_p", wv.inflow_weight_p );
+    forEachView( wv, f );
+}
+
+//! Calls f(name, view) for every View of WaterGridViews (forEachView).
+template <class Views, class F>
+void forEachWaterGridView( Views& wg, F&& f )
+{
+    forEachView( wg, f );
 }
 
 } // namespace mpm

@@ -36,14 +36,10 @@ def degree(Tv, terms=200):
     return 1.0 - float(np.sum(2.0 / (M * M) * np.exp(-M * M * Tv)))
 
 
-def main():
-    if len(sys.argv) != 2:
-        raise SystemExit(__doc__)
-    results = sys.argv[1]
-    with open(os.path.join(results, "metrics.json")) as f:
-        metrics = json.load(f)
-    with open(metrics["case_file"], "rb") as f:
-        case = tomllib.load(f)
+def consolidation_parameters(case):
+    """c_v, H, y_top, the load ramp t_ramp and the initial excess pressure p0
+    (Skempton's B with compressible water) of a Terzaghi case (a dict of its
+    TOML); speed_vs_error.py uses it too."""
     mat = case["materials"][0]
     water = case.get("water", {})
     K_w = water.get("bulk_modulus_pa", 2.2e9)
@@ -55,15 +51,25 @@ def main():
     K = k * rho_w * 9.81 / mu
     c_v = K / (rho_w * 9.81 * (m_v + n / K_w))
     polygon = np.array(case["bodies"][0]["polygon_m"])
-    H = polygon[:, 1].max() - polygon[:, 1].min()
-    y_top = polygon[:, 1].max()
+    load = case["stages"][0]["loads"][0]
+    ramp = load.get("time_function", [[0.0, 1.0]])
+    return {"c_v": c_v, "H": polygon[:, 1].max() - polygon[:, 1].min(), "y_top": polygon[:, 1].max(),
+            "t_ramp": ramp[-1][0] if len(ramp) > 1 else 0.0,
+            "p0": abs(load["traction_pa"][1]) * m_v / (m_v + n / K_w)}
+
+
+def main():
+    if len(sys.argv) != 2:
+        raise SystemExit(__doc__)
+    results = sys.argv[1]
+    with open(os.path.join(results, "metrics.json")) as f:
+        metrics = json.load(f)
+    with open(metrics["case_file"], "rb") as f:
+        case = tomllib.load(f)
+    phys = consolidation_parameters(case)
+    c_v, H, y_top, t_ramp, p0 = phys["c_v"], phys["H"], phys["y_top"], phys["t_ramp"], phys["p0"]
     h = case["grid"]["cell_size_m"]
     stage = case["stages"][0]
-    load = stage["loads"][0]
-    sigma_c = abs(load["traction_pa"][1])
-    ramp = load.get("time_function", [[0.0, 1.0]])
-    t_ramp = ramp[-1][0] if len(ramp) > 1 else 0.0
-    p0 = sigma_c * m_v / (m_v + n / K_w)
 
     out = {"kind": "terzaghi", "c_v_m2_per_s": c_v, "p0_pa": p0, "cells_over_height": round(H / h),
            "l2_error": {}, "l2_error_cell": {}, "degree_of_consolidation": {}}

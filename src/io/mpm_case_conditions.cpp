@@ -13,12 +13,6 @@ namespace Impl
 namespace
 {
 //---------------------------------------------------------------------------//
-std::string indexed( const std::string& path, const std::size_t k )
-{
-    return path + "[" + std::to_string( k ) + "]";
-}
-
-//---------------------------------------------------------------------------//
 // box_m = [[x_min, y_min], [x_max, y_max]], or nothing after an error.
 std::optional<std::array<Point2, 2>> readBox( TableReader& r )
 {
@@ -191,71 +185,74 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
                                             Diagnostics& diag )
 {
     std::vector<BoundaryConfig> result;
-    for ( std::size_t k = 0; k < array.size(); ++k )
-    {
-        const std::string path = indexed( prefix, k );
-        TableReader r( *array.get( k )->as_table(), path, diag );
-        r.checkKeys( { "where", "condition", "hydraulic", "polyline_m" },
-                     prefix == "boundaries" ? "[[boundaries]]"
-                                            : "[[stages.boundaries]]" );
-        BoundaryConfig bc;
-        const auto where = r.choice(
-            "where",
-            { "left", "right", "bottom", "top", "below_polyline", "polyline" },
-            Need::Required );
-        const auto condition =
-            r.choice( "condition", { "fixed", "fix_x", "fix_y", "none" },
-                      Need::Required );
-        if ( where )
-            bc.where = static_cast<BoundarySelector>( *where );
-        if ( condition == 3 )
-            bc.constrains_solid = false; // condition stays Fixed, unused
-        else if ( condition )
-            bc.condition = static_cast<BoundaryCondition>( *condition );
-        if ( !rejectIfDry( r, "hydraulic", analysis ) )
-            if ( const auto h =
-                     r.choice( "hydraulic", { "impermeable", "drained" },
-                               Need::Optional ) )
-                bc.hydraulic = static_cast<HydraulicCondition>( *h );
-        if ( !bc.constrains_solid && isDry( analysis ) )
-            diag.keyError( *r.find( "condition" ), r.keyPath( "condition" ),
-                           "\"none\" (a purely hydraulic boundary) is " +
-                               twoPhaseOnlyText() );
-        else if ( !bc.constrains_solid && !r.find( "hydraulic" ) )
-            r.missing( "hydraulic",
-                       "one of \"impermeable\", \"drained\" (required for "
-                       "condition = \"none\", a purely hydraulic boundary)" );
-        if ( where && bc.where == BoundarySelector::BelowPolyline )
+    forEachTable(
+        array, prefix, diag,
+        { "where", "condition", "hydraulic", "polyline_m" },
+        prefix == "boundaries" ? "[[boundaries]]" : "[[stages.boundaries]]",
+        [&]( TableReader& r )
         {
-            if ( auto line = r.points( "polyline_m", 2, "m", Need::Required ) )
+            const std::string& path = r.path();
+            BoundaryConfig bc;
+            const auto where = r.choice( "where",
+                                         { "left", "right", "bottom", "top",
+                                           "below_polyline", "polyline" },
+                                         Need::Required );
+            const auto condition =
+                r.choice( "condition", { "fixed", "fix_x", "fix_y", "none" },
+                          Need::Required );
+            if ( where )
+                bc.where = static_cast<BoundarySelector>( *where );
+            if ( condition == 3 )
+                bc.constrains_solid = false; // condition stays Fixed, unused
+            else if ( condition )
+                bc.condition = static_cast<BoundaryCondition>( *condition );
+            if ( !rejectIfDry( r, "hydraulic", analysis ) )
+                if ( const auto h =
+                         r.choice( "hydraulic", { "impermeable", "drained" },
+                                   Need::Optional ) )
+                    bc.hydraulic = static_cast<HydraulicCondition>( *h );
+            if ( !bc.constrains_solid && isDry( analysis ) )
+                diag.keyError( *r.find( "condition" ), r.keyPath( "condition" ),
+                               "\"none\" (a purely hydraulic boundary) is " +
+                                   twoPhaseOnlyText() );
+            else if ( !bc.constrains_solid && !r.find( "hydraulic" ) )
+                r.missing(
+                    "hydraulic",
+                    "one of \"impermeable\", \"drained\" (required for "
+                    "condition = \"none\", a purely hydraulic boundary)" );
+            if ( where && bc.where == BoundarySelector::BelowPolyline )
             {
-                checkPolyline( *line, *r.find( "polyline_m" ),
-                               path + ".polyline_m", diag );
-                if ( grid )
-                    warnPolylineOutsideGrid(
-                        *line, *r.find( "polyline_m" ), path + ".polyline_m",
-                        *grid,
-                        "it selects only the grid's nodes below it, the "
-                        "line extended horizontally beyond its ends",
-                        diag );
-                bc.polyline_m = *line;
+                if ( auto line =
+                         r.points( "polyline_m", 2, "m", Need::Required ) )
+                {
+                    checkPolyline( *line, *r.find( "polyline_m" ),
+                                   path + ".polyline_m", diag );
+                    if ( grid )
+                        warnPolylineOutsideGrid(
+                            *line, *r.find( "polyline_m" ),
+                            path + ".polyline_m", *grid,
+                            "it selects only the grid's nodes below it, the "
+                            "line extended horizontally beyond its ends",
+                            diag );
+                    bc.polyline_m = *line;
+                }
             }
-        }
-        else if ( where && bc.where == BoundarySelector::Polyline )
-        {
-            if ( auto line = r.points( "polyline_m", 2, "m", Need::Required ) )
+            else if ( where && bc.where == BoundarySelector::Polyline )
             {
-                checkWallPolyline( *line, *r.find( "polyline_m" ),
-                                   path + ".polyline_m", grid, diag );
-                bc.polyline_m = *line;
+                if ( auto line =
+                         r.points( "polyline_m", 2, "m", Need::Required ) )
+                {
+                    checkWallPolyline( *line, *r.find( "polyline_m" ),
+                                       path + ".polyline_m", grid, diag );
+                    bc.polyline_m = *line;
+                }
             }
-        }
-        else if ( where && r.find( "polyline_m" ) )
-            diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
-                           "only for where = \"below_polyline\" or "
-                           "\"polyline\"; remove it or change 'where'" );
-        result.push_back( bc );
-    }
+            else if ( where && r.find( "polyline_m" ) )
+                diag.keyError( *r.find( "polyline_m" ), path + ".polyline_m",
+                               "only for where = \"below_polyline\" or "
+                               "\"polyline\"; remove it or change 'where'" );
+            result.push_back( bc );
+        } );
     return result;
 }
 
@@ -265,37 +262,37 @@ std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
                                                       Diagnostics& diag )
 {
     std::vector<PorePressureCondition> result;
-    for ( std::size_t k = 0; k < array.size(); ++k )
-    {
-        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
-                       diag );
-        r.checkKeys(
-            { "where", "box_m", "pressure_pa", "hold", "time_function" },
-            "[[stages.pore_pressures]]" );
-        PorePressureCondition condition;
-        condition.points = readSelection( r, false );
-        const toml::node* hold = r.find( "hold" );
-        condition.hold_initial =
-            hold && r.choice( "hold", { "initial" }, Need::Optional );
-        if ( hold && r.find( "pressure_pa" ) )
-            diag.keyError( *r.find( "pressure_pa" ), r.keyPath( "pressure_pa" ),
-                           "not allowed with hold: a held pore pressure "
-                           "keeps each point's p_w at the stage start; give "
-                           "either pressure_pa or hold" );
-        else if ( !hold )
-            condition.pressure_pa =
-                r.number( "pressure_pa", Range::any(),
-                          "Pa (or hold = \"initial\")", Need::Required )
-                    .value_or( 0.0 );
-        if ( hold && r.find( "time_function" ) )
-            diag.keyError( *r.find( "time_function" ),
-                           r.keyPath( "time_function" ),
-                           "not allowed with hold: the held p_w of each point "
-                           "is its value at the stage start" );
-        else
-            condition.time_function = readTimeFunction( r );
-        result.push_back( condition );
-    }
+    forEachTable(
+        array, prefix, diag,
+        { "where", "box_m", "pressure_pa", "hold", "time_function" },
+        "[[stages.pore_pressures]]",
+        [&]( TableReader& r )
+        {
+            PorePressureCondition condition;
+            condition.points = readSelection( r, false );
+            const toml::node* hold = r.find( "hold" );
+            condition.hold_initial =
+                hold && r.choice( "hold", { "initial" }, Need::Optional );
+            if ( hold && r.find( "pressure_pa" ) )
+                diag.keyError(
+                    *r.find( "pressure_pa" ), r.keyPath( "pressure_pa" ),
+                    "not allowed with hold: a held pore pressure "
+                    "keeps each point's p_w at the stage start; give "
+                    "either pressure_pa or hold" );
+            else if ( !hold )
+                condition.pressure_pa =
+                    r.number( "pressure_pa", Range::any(),
+                              "Pa (or hold = \"initial\")", Need::Required )
+                        .value_or( 0.0 );
+            if ( hold && r.find( "time_function" ) )
+                diag.keyError(
+                    *r.find( "time_function" ), r.keyPath( "time_function" ),
+                    "not allowed with hold: the held p_w of each point "
+                    "is its value at the stage start" );
+            else
+                condition.time_function = readTimeFunction( r );
+            result.push_back( condition );
+        } );
     return result;
 }
 
@@ -304,24 +301,23 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix, Diagnostics& diag )
 {
     std::vector<PointLoad> result;
-    for ( std::size_t k = 0; k < array.size(); ++k )
-    {
-        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
-                       diag );
-        r.checkKeys(
-            { "where", "box_m", "traction_pa", "length_m", "time_function" },
-            "[[stages.loads]]" );
-        PointLoad load;
-        load.points = readSelection( r, false );
-        load.traction_pa = r.point( "traction_pa", "Pa", Need::Required )
-                               .value_or( load.traction_pa );
-        load.length_m =
-            r.number( "length_m", Range::above( 0.0 ),
-                      "m (the loaded boundary length)", Need::Required )
-                .value_or( load.length_m );
-        load.time_function = readTimeFunction( r );
-        result.push_back( load );
-    }
+    forEachTable(
+        array, prefix, diag,
+        { "where", "box_m", "traction_pa", "length_m", "time_function" },
+        "[[stages.loads]]",
+        [&]( TableReader& r )
+        {
+            PointLoad load;
+            load.points = readSelection( r, false );
+            load.traction_pa = r.point( "traction_pa", "Pa", Need::Required )
+                                   .value_or( load.traction_pa );
+            load.length_m =
+                r.number( "length_m", Range::above( 0.0 ),
+                          "m (the loaded boundary length)", Need::Required )
+                    .value_or( load.length_m );
+            load.time_function = readTimeFunction( r );
+            result.push_back( load );
+        } );
     return result;
 }
 

@@ -13,12 +13,6 @@ namespace Impl
 namespace
 {
 //---------------------------------------------------------------------------//
-std::string indexed( const std::string& path, const std::size_t k )
-{
-    return path + "[" + std::to_string( k ) + "]";
-}
-
-//---------------------------------------------------------------------------//
 /*!
   polyline_m and measured_on of an inflow on a polyline: at least two
   points, consecutive ones distinct; measured on the horizontal, x must not
@@ -100,71 +94,70 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                                       Diagnostics& diag )
 {
     std::vector<WaterInflow> result;
-    for ( std::size_t k = 0; k < array.size(); ++k )
-    {
-        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
-                       diag );
-        r.checkKeys( { "where", "box_m", "polyline_m", "measured_on",
-                       "flux_m_per_s", "length_m", "time_function", "ponding",
-                       "follow_surface_s" },
-                     "[[stages.inflows]]" );
-        WaterInflow inflow;
-        inflow.points = readSelection( r, true );
-        inflow.flux_m_per_s =
-            r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
-                      "m/s (rainfall intensity, volume per area and time)",
-                      Need::Required )
-                .value_or( 0.0 );
-        const toml::node* follow = r.find( "follow_surface_s" );
-        const toml::node* length = r.find( "length_m" );
-        const bool on_polyline =
-            r.find( "where" ) &&
-            inflow.points.kind == PointSelection::Kind::Polyline;
-        if ( follow )
+    forEachTable(
+        array, prefix, diag,
+        { "where", "box_m", "polyline_m", "measured_on", "flux_m_per_s",
+          "length_m", "time_function", "ponding", "follow_surface_s" },
+        "[[stages.inflows]]",
+        [&]( TableReader& r )
         {
-            inflow.follow_surface_interval_s =
-                r.number( "follow_surface_s", Range::above( 0.0 ),
-                          "s (how often the surface is re-detected)",
+            WaterInflow inflow;
+            inflow.points = readSelection( r, true );
+            inflow.flux_m_per_s =
+                r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
+                          "m/s (rainfall intensity, volume per area and time)",
                           Need::Required )
                     .value_or( 0.0 );
-            if ( inflow.points.kind != PointSelection::Kind::SurfaceCells )
-                diag.keyError( *follow, r.keyPath( "follow_surface_s" ),
-                               "a rainfall that follows the surface needs "
-                               "where = \"surface_cells\"" );
-            if ( length )
-                diag.keyError( *length, r.keyPath( "length_m" ),
-                               "not allowed with follow_surface_s: the "
-                               "length is the surface's current horizontal "
-                               "projection" );
-        }
-        else if ( on_polyline )
-        {
-            if ( length )
-                diag.keyError( *length, r.keyPath( "length_m" ),
-                               "not allowed with where = \"polyline\": the "
-                               "length is polyline_m's (along the line, or "
-                               "its horizontal projection with measured_on "
-                               "= \"horizontal\")" );
-            readInflowPolyline( r, inflow, grid );
-        }
-        else if ( inflow.onGridEdge() )
-        {
-            if ( length )
-                diag.keyError( *length, r.keyPath( "length_m" ),
-                               "not allowed on a grid edge: the flux acts "
-                               "on the edge's nodes that touch soil" );
-        }
-        else
-            inflow.length_m =
-                r.number( "length_m", Range::above( 0.0 ),
-                          "m (the length of surface receiving the flux)",
-                          Need::Required )
-                    .value_or( inflow.length_m );
-        inflow.time_function = readTimeFunction( r );
-        inflow.ponding =
-            r.boolean( "ponding", Need::Optional ).value_or( inflow.ponding );
-        result.push_back( inflow );
-    }
+            const toml::node* follow = r.find( "follow_surface_s" );
+            const toml::node* length = r.find( "length_m" );
+            const bool on_polyline =
+                r.find( "where" ) &&
+                inflow.points.kind == PointSelection::Kind::Polyline;
+            if ( follow )
+            {
+                inflow.follow_surface_interval_s =
+                    r.number( "follow_surface_s", Range::above( 0.0 ),
+                              "s (how often the surface is re-detected)",
+                              Need::Required )
+                        .value_or( 0.0 );
+                if ( inflow.points.kind != PointSelection::Kind::SurfaceCells )
+                    diag.keyError( *follow, r.keyPath( "follow_surface_s" ),
+                                   "a rainfall that follows the surface needs "
+                                   "where = \"surface_cells\"" );
+                if ( length )
+                    diag.keyError( *length, r.keyPath( "length_m" ),
+                                   "not allowed with follow_surface_s: the "
+                                   "length is the surface's current horizontal "
+                                   "projection" );
+            }
+            else if ( on_polyline )
+            {
+                if ( length )
+                    diag.keyError( *length, r.keyPath( "length_m" ),
+                                   "not allowed with where = \"polyline\": the "
+                                   "length is polyline_m's (along the line, or "
+                                   "its horizontal projection with measured_on "
+                                   "= \"horizontal\")" );
+                readInflowPolyline( r, inflow, grid );
+            }
+            else if ( inflow.onGridEdge() )
+            {
+                if ( length )
+                    diag.keyError( *length, r.keyPath( "length_m" ),
+                                   "not allowed on a grid edge: the flux acts "
+                                   "on the edge's nodes that touch soil" );
+            }
+            else
+                inflow.length_m =
+                    r.number( "length_m", Range::above( 0.0 ),
+                              "m (the length of surface receiving the flux)",
+                              Need::Required )
+                        .value_or( inflow.length_m );
+            inflow.time_function = readTimeFunction( r );
+            inflow.ponding = r.boolean( "ponding", Need::Optional )
+                                 .value_or( inflow.ponding );
+            result.push_back( inflow );
+        } );
     return result;
 }
 

@@ -175,32 +175,27 @@ class CaseParser
             _diag.mismatch( *arr, "materials",
                             "at least one material ([[materials]] table)" );
         std::map<std::string, std::string> first_path;
-        for ( std::size_t k = 0; k < arr->size(); ++k )
-        {
-            const std::string path = "materials[" + std::to_string( k ) + "]";
-            TableReader r( *arr->get( k )->as_table(), path, _diag );
-            r.checkKeys( materialKeys(), "[[materials]]" );
-            MaterialDraft draft;
-            if ( const auto name = r.string( "name", Need::Required ) )
+        Impl::forEachTable(
+            *arr, "materials", _diag, materialKeys(), "[[materials]]",
+            [&]( TableReader& r )
             {
-                draft.name = *name;
-                if ( first_path.count( *name ) )
-                    _diag.keyError( *r.find( "name" ), path + ".name",
-                                    "duplicate material name '" + *name +
-                                        "' (already used by " +
-                                        first_path[*name] +
-                                        "); material names must be unique" );
-                else
-                    first_path[*name] = path;
-            }
-            readMaterialValues( r, draft, Need::Required, _analysis );
-            const auto material = finishMaterial( draft, r, _analysis );
-            if ( material )
-                _config.materials.push_back( *material );
-            _drafts.push_back( draft );
-            _material_names.push_back( draft.name );
-            _materials_ok = _materials_ok && material && !draft.name.empty();
-        }
+                MaterialDraft draft;
+                if ( const auto name = r.string( "name", Need::Required ) )
+                {
+                    draft.name = *name;
+                    Impl::checkUniqueName( r, *name, first_path,
+                                           "material name",
+                                           "; material names must be unique" );
+                }
+                readMaterialValues( r, draft, Need::Required, _analysis );
+                const auto material = finishMaterial( draft, r, _analysis );
+                if ( material )
+                    _config.materials.push_back( *material );
+                _drafts.push_back( draft );
+                _material_names.push_back( draft.name );
+                _materials_ok =
+                    _materials_ok && material && !draft.name.empty();
+            } );
     }
 
     //! Index of a material by name, or -1.
@@ -221,33 +216,36 @@ class CaseParser
             return;
         if ( arr->empty() )
             _diag.mismatch( *arr, "bodies", "at least one [[bodies]] table" );
-        for ( std::size_t k = 0; k < arr->size(); ++k )
-        {
-            const std::string path = "bodies[" + std::to_string( k ) + "]";
-            TableReader r( *arr->get( k )->as_table(), path, _diag );
-            r.checkKeys( { "material", "polygon_m", "initial_pore_pressure_pa",
-                           "initial_pore_pressure_gradient_pa_per_m",
-                           "initial_pore_pressure_profile" },
-                         "[[bodies]]" );
-            BodyConfig body;
-            if ( const auto name = r.string( "material", Need::Required ) )
+        Impl::forEachTable(
+            *arr, "bodies", _diag,
+            { "material", "polygon_m", "initial_pore_pressure_pa",
+              "initial_pore_pressure_gradient_pa_per_m",
+              "initial_pore_pressure_profile" },
+            "[[bodies]]",
+            [&]( TableReader& r )
             {
-                body.material = *name;
-                body.material_id = materialIndex( *name );
-                if ( body.material_id < 0 && !_material_names.empty() )
-                    unknownMaterial( r.find( "material" )->source(),
-                                     path + ".material", *name );
-            }
-            if ( auto polygon = r.points( "polygon_m", 3, "m", Need::Required,
-                                          Impl::max_polygon_vertices ) )
-            {
-                Impl::checkBodyPolygon( *polygon, *r.find( "polygon_m" ),
-                                        path + ".polygon_m", grid(), _diag );
-                body.polygon_m = *polygon;
-            }
-            Impl::readInitialPorePressure( r, _analysis, body );
-            _config.bodies.push_back( body );
-        }
+                const std::string& path = r.path();
+                BodyConfig body;
+                if ( const auto name = r.string( "material", Need::Required ) )
+                {
+                    body.material = *name;
+                    body.material_id = materialIndex( *name );
+                    if ( body.material_id < 0 && !_material_names.empty() )
+                        unknownMaterial( r.find( "material" )->source(),
+                                         path + ".material", *name );
+                }
+                if ( auto polygon =
+                         r.points( "polygon_m", 3, "m", Need::Required,
+                                   Impl::max_polygon_vertices ) )
+                {
+                    Impl::checkBodyPolygon( *polygon, *r.find( "polygon_m" ),
+                                            path + ".polygon_m", grid(),
+                                            _diag );
+                    body.polygon_m = *polygon;
+                }
+                Impl::readInitialPorePressure( r, _analysis, body );
+                _config.bodies.push_back( body );
+            } );
     }
 
     void parseStages( TableReader& root )
@@ -259,56 +257,53 @@ class CaseParser
         if ( arr->empty() )
             _diag.mismatch( *arr, "stages", "at least one [[stages]] table" );
         std::map<std::string, std::string> first_path;
-        for ( std::size_t k = 0; k < arr->size(); ++k )
-        {
-            const std::string path = "stages[" + std::to_string( k ) + "]";
-            TableReader r( *arr->get( k )->as_table(), path, _diag );
-            r.checkKeys( { "name", "type", "gravity_m_per_s2", "damping",
-                           "duration_s", "ke_ratio_tolerance",
-                           "snapshot_interval_s", "snapshot_times_s",
-                           "static_stop", "reset_displacement", "materials",
-                           "boundaries", "pore_pressures", "loads", "inflows" },
-                         "[[stages]]" );
-            StageConfig stage;
-            if ( const auto name = r.string( "name", Need::Required ) )
+        Impl::forEachTable(
+            *arr, "stages", _diag,
+            { "name", "type", "gravity_m_per_s2", "damping", "duration_s",
+              "ke_ratio_tolerance", "snapshot_interval_s", "snapshot_times_s",
+              "static_stop", "reset_displacement", "materials", "boundaries",
+              "pore_pressures", "loads", "inflows" },
+            "[[stages]]",
+            [&]( TableReader& r )
             {
-                stage.name = *name;
-                if ( first_path.count( *name ) )
-                    _diag.keyError( *r.find( "name" ), path + ".name",
-                                    "duplicate stage name '" + *name +
-                                        "' (already used by " +
-                                        first_path[*name] + ")" );
-                first_path.emplace( *name, path );
-            }
-            const auto type = r.choice( "type", { "quasi_static", "dynamic" },
-                                        Need::Required );
-            if ( type )
-                stage.type = static_cast<StageType>( *type );
-            Impl::readStageTiming( r, path, type.has_value(), stage, _diag );
-            stage.materials = _config.materials;
-            if ( const auto* t = r.subTable( "materials", Need::Optional ) )
-                parseOverrides( *t, path + ".materials", stage );
-            stage.boundaries = _config.boundaries;
-            if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
-                                               "[[stages.boundaries]]" ) )
-                stage.boundaries = Impl::readBoundaries(
-                    *b, path + ".boundaries", _analysis, grid(), _diag );
-            if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
-                if ( const auto* f = r.tableArray( "inflows", Need::Optional,
-                                                   "[[stages.inflows]]" ) )
-                    stage.inflows = Impl::readInflows( *f, path + ".inflows",
-                                                       grid(), _diag );
-            if ( !Impl::rejectIfDry( r, "pore_pressures", _analysis ) )
-                if ( const auto* p =
-                         r.tableArray( "pore_pressures", Need::Optional,
-                                       "[[stages.pore_pressures]]" ) )
-                    stage.pore_pressures = Impl::readPorePressures(
-                        *p, path + ".pore_pressures", _diag );
-            if ( const auto* l = r.tableArray( "loads", Need::Optional,
-                                               "[[stages.loads]]" ) )
-                stage.loads = Impl::readLoads( *l, path + ".loads", _diag );
-            _config.stages.push_back( stage );
-        }
+                const std::string& path = r.path();
+                StageConfig stage;
+                if ( const auto name = r.string( "name", Need::Required ) )
+                {
+                    stage.name = *name;
+                    Impl::checkUniqueName( r, *name, first_path, "stage name",
+                                           "" );
+                }
+                const auto type = r.choice(
+                    "type", { "quasi_static", "dynamic" }, Need::Required );
+                if ( type )
+                    stage.type = static_cast<StageType>( *type );
+                Impl::readStageTiming( r, path, type.has_value(), stage,
+                                       _diag );
+                stage.materials = _config.materials;
+                if ( const auto* t = r.subTable( "materials", Need::Optional ) )
+                    parseOverrides( *t, path + ".materials", stage );
+                stage.boundaries = _config.boundaries;
+                if ( const auto* b = r.tableArray( "boundaries", Need::Optional,
+                                                   "[[stages.boundaries]]" ) )
+                    stage.boundaries = Impl::readBoundaries(
+                        *b, path + ".boundaries", _analysis, grid(), _diag );
+                if ( !Impl::rejectIfDry( r, "inflows", _analysis ) )
+                    if ( const auto* f = r.tableArray(
+                             "inflows", Need::Optional, "[[stages.inflows]]" ) )
+                        stage.inflows = Impl::readInflows(
+                            *f, path + ".inflows", grid(), _diag );
+                if ( !Impl::rejectIfDry( r, "pore_pressures", _analysis ) )
+                    if ( const auto* p =
+                             r.tableArray( "pore_pressures", Need::Optional,
+                                           "[[stages.pore_pressures]]" ) )
+                        stage.pore_pressures = Impl::readPorePressures(
+                            *p, path + ".pore_pressures", _diag );
+                if ( const auto* l = r.tableArray( "loads", Need::Optional,
+                                                   "[[stages.loads]]" ) )
+                    stage.loads = Impl::readLoads( *l, path + ".loads", _diag );
+                _config.stages.push_back( stage );
+            } );
     }
 
     //! Apply [stages.materials.<name>] tables to the stage's materials.

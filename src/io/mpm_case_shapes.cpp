@@ -1,4 +1,5 @@
 #include <io/mpm_case_shapes.hpp>
+#include <io/mpm_toml_access.hpp>
 #include <setup/mpm_geometry.hpp>
 
 #include <algorithm>
@@ -16,12 +17,6 @@ namespace
 std::string pointText( const Point2& p )
 {
     return "(" + formatNumber( p[0] ) + ", " + formatNumber( p[1] ) + ")";
-}
-
-//---------------------------------------------------------------------------//
-std::string indexed( const std::string& path, const std::size_t k )
-{
-    return path + "[" + std::to_string( k ) + "]";
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_safe_file.hpp>
+#include <records/mpm_point_fields.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -129,10 +130,11 @@ void ProbeRecorder::open( const double resume_time_s )
         std::filesystem::path( _path ).parent_path(), ec );
     _fd = createExclusive( partial ); // a planted symlink is not followed
     _failed = false;
-    std::string text =
-        "time_s,stage,name,point_id,x_m,y_m,u_x_m,u_y_m,v_x_m_per_s,"
-        "v_y_m_per_s,v_w_x_m_per_s,v_w_y_m_per_s,p_w_pa,S,eps_p_bar,"
-        "K_m_per_s\n";
+    std::string text = "time_s,stage,name,point_id";
+    for ( const PointField& field : pointFields() )
+        if ( field.probe_columns )
+            text += std::string( "," ) + field.probe_columns;
+    text += ",K_m_per_s\n";
     for ( const std::string& line : kept )
         text += line + '\n';
     append( text );
@@ -147,28 +149,29 @@ void ProbeRecorder::open( const double resume_time_s )
 void ProbeRecorder::record( const RunProgress& progress,
                             const HostSnapshot& snapshot )
 {
-    const bool water = !snapshot.p_w.empty();
     std::ostringstream rows;
     rows << std::setprecision( 9 );
     for ( const Probe& probe : _probes )
     {
         const int p = probe.point;
-        auto pair = [&]( const std::vector<double>& field )
-        { rows << ',' << field[2 * p] << ',' << field[2 * p + 1]; };
         rows << timeText( progress.time_s ) << ',' << progress.stage << ','
              << probe.name << ',' << snapshot.id[p];
-        pair( snapshot.x );
-        pair( snapshot.displacement );
-        pair( snapshot.v );
-        if ( water )
+        // The probed fields of the registry (nan: none in a dry scene).
+        for ( const PointField& field : pointFields() )
         {
-            pair( snapshot.v_w );
-            rows << ',' << snapshot.p_w[p] << ',' << snapshot.S[p];
+            if ( !field.probe_columns )
+                continue;
+            const std::vector<double>& values = snapshot.*field.values;
+            for ( int c = 0; c < field.components; ++c )
+            {
+                rows << ',';
+                if ( values.empty() )
+                    rows << "nan";
+                else
+                    rows << values[field.components * p + c];
+            }
         }
-        else
-            rows << ",nan,nan,nan,nan";
-        rows << ',' << snapshot.eps_p_bar[p] << ','
-             << _K_of_material[snapshot.material[p]] << '\n';
+        rows << ',' << _K_of_material[snapshot.material[p]] << '\n';
     }
     append( rows.str() );
     _next_time_s = nextMultiple( progress.time_s, _interval_s );

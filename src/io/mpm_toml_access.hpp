@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -333,6 +334,47 @@ class TableReader
     Diagnostics& _diag;
     std::set<std::string> _suggested;
 };
+
+//---------------------------------------------------------------------------//
+//! The path of element k of the array at `path`: path[k].
+inline std::string indexed( const std::string& path, const std::size_t k )
+{
+    return path + "[" + std::to_string( k ) + "]";
+}
+
+/*!
+  \brief Calls read(r) with the TableReader r of every table of an array of
+  tables (path prefix[k]), after checking its keys against `known` (`where`
+  names the table in the messages).
+*/
+template <class Read>
+void forEachTable( const toml::array& array, const std::string& prefix,
+                   Diagnostics& diag, const std::vector<std::string>& known,
+                   const std::string& where, Read&& read )
+{
+    for ( std::size_t k = 0; k < array.size(); ++k )
+    {
+        TableReader r( *array.get( k )->as_table(), indexed( prefix, k ),
+                       diag );
+        r.checkKeys( known, where );
+        read( r );
+    }
+}
+
+//! Reports a `name` key of r used before (first_path: name -> the path of
+//! the table that used it first) and records it otherwise; `what` names
+//! the name ("material name") and `hint` ends the message.
+inline void checkUniqueName( TableReader& r, const std::string& name,
+                             std::map<std::string, std::string>& first_path,
+                             const std::string& what, const std::string& hint )
+{
+    const auto [first, inserted] = first_path.emplace( name, r.path() );
+    if ( !inserted )
+        r.diag().keyError( *r.find( "name" ), r.keyPath( "name" ),
+                           "duplicate " + what + " '" + name +
+                               "' (already used by " + first->second + ")" +
+                               hint );
+}
 
 } // namespace Impl
 } // namespace mpm

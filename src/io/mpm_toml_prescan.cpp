@@ -175,6 +175,21 @@ class Scanner
         }
     }
 
+    //! At a quote that opens a string: a multi-line one (its delimiter
+    //! `multi_delimiter` consumed, true) or a one-line one.
+    bool openString( const std::string_view multi_delimiter, const Lex multi,
+                     const Lex single )
+    {
+        if ( startsWith( multi_delimiter ) )
+        {
+            advance( multi_delimiter.size() );
+            _lex = multi;
+            return true;
+        }
+        _lex = single;
+        return false;
+    }
+
     bool plain( const char c )
     {
         if ( static_cast<unsigned char>( c ) >= 0x80 )
@@ -190,26 +205,14 @@ class Scanner
             _lex = Lex::Comment;
             break;
         case '"':
-            if ( !opensString( prev ) )
-                break;
-            if ( startsWith( "\"\"\"" ) )
-            {
-                advance( 3 );
-                _lex = Lex::MultiBasic;
+            if ( opensString( prev ) &&
+                 openString( "\"\"\"", Lex::MultiBasic, Lex::Basic ) )
                 return true;
-            }
-            _lex = Lex::Basic;
             break;
         case '\'':
-            if ( !opensString( prev ) )
-                break;
-            if ( startsWith( "'''" ) )
-            {
-                advance( 3 );
-                _lex = Lex::MultiLiteral;
+            if ( opensString( prev ) &&
+                 openString( "'''", Lex::MultiLiteral, Lex::Literal ) )
                 return true;
-            }
-            _lex = Lex::Literal;
             break;
         case 'T':
         case 't':

@@ -14,8 +14,10 @@ namespace mpm
   particles.h5 (and the probes' and scripts' vocabulary), unit, components,
   the HostSnapshot member that holds them and the View they copy (its name
   in forEachParticleView / forEachWaterParticleView; null for a derived
-  field). hostSnapshot fills the members from the Views, writeSnapshot
-  writes them, the test PointFields.* checks the names against the Views.
+  field) and its columns in probes.csv (null if not probed). hostSnapshot
+  fills the members from the Views, writeSnapshot writes them, the probe
+  recorder writes the probed ones, the test PointFields.* checks the names
+  against the Views.
 */
 struct PointField
 {
@@ -25,6 +27,8 @@ struct PointField
     std::vector<double> HostSnapshot::*values;
     const char* view; //!< the View copied, null if derived
     bool two_phase;   //!< only in two-phase scenes
+    //! Its probes.csv columns, one per component, comma-separated.
+    const char* probe_columns;
 };
 
 //! An integer point field (unit "1").
@@ -40,19 +44,24 @@ inline const std::vector<PointField>& pointFields()
 {
     using H = HostSnapshot;
     static const std::vector<PointField> fields = {
-        { "x", "m", 2, &H::x, "x_p", false },
-        { "displacement", "m", 2, &H::displacement, nullptr, false },
-        { "velocity", "m/s", 2, &H::v, "v_p", false },
-        { "stress", "Pa", 4, &H::sigma, "sigma_p", false },
-        { "strain", "-", 4, &H::eps, "eps_p", false },
-        { "plastic_shear_strain", "-", 1, &H::eps_p_bar, "eps_p_bar_p", false },
-        { "volume", "m^3/m", 1, &H::vol, "vol_p", false },
-        { "mass", "kg/m", 1, &H::mass, "m_p", false },
-        { "pore_pressure", "Pa", 1, &H::p_w, "p_w_p", true },
-        { "saturation", "-", 1, &H::S, "S_p", true },
-        { "porosity", "-", 1, &H::n, "n_p", true },
-        { "water_velocity", "m/s", 2, &H::v_w, "v_w_p", true },
-        { "relative_permeability", "-", 1, &H::k_rel, "k_rel_p", true } };
+        { "x", "m", 2, &H::x, "x_p", false, "x_m,y_m" },
+        { "displacement", "m", 2, &H::displacement, nullptr, false,
+          "u_x_m,u_y_m" },
+        { "velocity", "m/s", 2, &H::v, "v_p", false,
+          "v_x_m_per_s,v_y_m_per_s" },
+        { "stress", "Pa", 4, &H::sigma, "sigma_p", false, nullptr },
+        { "strain", "-", 4, &H::eps, "eps_p", false, nullptr },
+        { "plastic_shear_strain", "-", 1, &H::eps_p_bar, "eps_p_bar_p", false,
+          "eps_p_bar" },
+        { "volume", "m^3/m", 1, &H::vol, "vol_p", false, nullptr },
+        { "mass", "kg/m", 1, &H::mass, "m_p", false, nullptr },
+        { "pore_pressure", "Pa", 1, &H::p_w, "p_w_p", true, "p_w_pa" },
+        { "saturation", "-", 1, &H::S, "S_p", true, "S" },
+        { "porosity", "-", 1, &H::n, "n_p", true, nullptr },
+        { "water_velocity", "m/s", 2, &H::v_w, "v_w_p", true,
+          "v_w_x_m_per_s,v_w_y_m_per_s" },
+        { "relative_permeability", "-", 1, &H::k_rel, "k_rel_p", true,
+          nullptr } };
     return fields;
 }
 

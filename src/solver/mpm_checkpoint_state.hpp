@@ -16,43 +16,13 @@ namespace mpm
 {
 //---------------------------------------------------------------------------//
 // The Views a checkpoint holds: every View of the point structs
-// (forEachParticleView, forEachWaterParticleView, next to the structs in
-// views/) and of the grid structs. A View added to one of these structs
-// must be added to its list (the test Restart.checkpoint_lists_every_point_view
-// checks the point structs).
-// Grid Views are mostly rebuilt every step, but v_i / dv_i keep their
-// values on nodes that lost their mass and the velocity gradient reads
-// them, so all are kept to make a restart exact.
-
-//! Calls f(name, view) for every View of GridViews.
-template <class Views, class F>
-void forEachGridView( Views& gv, F&& f )
-{
-    f( "m_i", gv.m_i );
-    f( "p_i", gv.p_i );
-    f( "f_i", gv.f_i );
-    f( "v_i", gv.v_i );
-    f( "dv_i", gv.dv_i );
-    f( "flags_i", gv.flags_i );
-    f( "active_i", gv.active_i );
-    f( "vol_c", gv.vol_c );
-    f( "dvol_c", gv.dvol_c );
-}
-
-//! Calls f(name, view) for every View of WaterGridViews.
-template <class Views, class F>
-void forEachWaterGridView( Views& wg, F&& f )
-{
-    f( "m_w_i", wg.m_w_i );
-    f( "vol_i", wg.vol_i );
-    f( "mv_w_i", wg.mv_w_i );
-    f( "f_w_i", wg.f_w_i );
-    f( "q_i", wg.q_i );
-    f( "v_w_i", wg.v_w_i );
-    f( "dv_w_i", wg.dv_w_i );
-    f( "flags_w_i", wg.flags_w_i );
-    f( "div_w_c", wg.div_w_c );
-}
+// (forEachParticleView, forEachWaterParticleView, forEachGridView,
+// forEachWaterGridView, next to the structs in views/). A View added to one
+// of these structs must be added to its list (the test
+// Restart.checkpoint_lists_every_point_view checks the point structs). Grid
+// Views are mostly rebuilt every step, but v_i / dv_i keep their values on
+// nodes that lost their mass and the velocity gradient reads them, so all are
+// kept to make a restart exact.
 
 //! Calls f("<group>/<view>", view) for every View of the simulation's
 //! state (water groups only in two-phase scenes). Sim may be const.

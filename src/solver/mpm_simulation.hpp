@@ -22,6 +22,7 @@
 #include <setup/mpm_base_slivers.hpp>
 #include <setup/mpm_retention_tables.hpp>
 #include <solver/mpm_diagnosis.hpp>
+#include <solver/mpm_dry_step.hpp>
 #include <solver/mpm_host_transfer.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_setup.hpp>
@@ -106,10 +107,7 @@ class Simulation
                     points.size(), grid.geometry.nx * grid.geometry.ny );
         }
         else
-        {
-            _dry_sums = DryNodeSums<ExecSpace>( "p2g_dry", num_nodes );
-            _dry_momentum = MomentumSums<ExecSpace>( "remap_dry", num_nodes );
-        }
+            _dry_step = DryStepPhases<ExecSpace>( grid.geometry );
 
         initialiseParticles( config, points, particles, water_particles,
                              water );
@@ -323,19 +321,17 @@ class Simulation
                                   const StepSettings& settings )
     {
         const ExecSpace exec;
-        scatterMassMomentumForce( exec, particles, grid.geometry,
-                                  settings.gravity_x, settings.gravity_y,
-                                  conditions.load_force, _dry_sums );
-        gridUpdateDry( exec, grid, _dry_sums, dt, settings.damping,
-                       solver.inertia_scaling );
-        g2pVelocityRemap( exec, particles, grid, dt, stepFlipFraction( dt ),
-                          _dry_momentum );
-        remapVelocity( exec, grid, _dry_momentum );
+        _dry_step.scatter( exec, particles, grid.geometry, settings.gravity_x,
+                           settings.gravity_y, conditions.load_force );
+        _dry_step.updateGrid( exec, grid, dt, settings.damping,
+                              solver.inertia_scaling );
+        _dry_step.gatherAndRemap( exec, particles, grid, dt,
+                                  stepFlipFraction( dt ) );
         if ( solver.bbar )
             cellAverages( exec );
-        return updatePointsDry( exec, particles, grid, materials, dt,
-                                solver.bbar,
-                                solver.remove_points_leaving_grid );
+        return _dry_step.updatePoints( exec, particles, grid, materials, dt,
+                                       solver.bbar,
+                                       solver.remove_points_leaving_grid );
     }
 
     /*!
@@ -421,8 +417,7 @@ class Simulation
     //! The tabulated retention laws of `materials` (solver.retention_table).
     RetentionTables<ExecSpace> _retention_tables;
     // Grid sums kept between steps (empty if the scene does not need them).
-    DryNodeSums<ExecSpace> _dry_sums;
-    MomentumSums<ExecSpace> _dry_momentum;
+    DryStepPhases<ExecSpace> _dry_step;
     TwoPhaseNodeSums<ExecSpace> _two_phase_sums;
     TwoPhaseMomentumSums<ExecSpace> _two_phase_momentum;
     CellSums<ExecSpace> _cell_sums;
