@@ -67,6 +67,16 @@ void allocateViews( Struct& s, const Extents... extents )
                            s );
 }
 
+//! Makes every View of `to` the same View of `from` (the same struct
+//! with other memory traits).
+template <class From, class To>
+void assignViews( const From& from, To& to )
+{
+    From::forEachViewOf( []( const char*, auto& view_from, auto& view_to )
+                         { view_to = view_from; },
+                         from, to );
+}
+
 /*!
   \brief The unmanaged twin of a View struct, for kernel closures (see
   unmanaged(view)): the same Views without reference counting. Plain
@@ -76,8 +86,7 @@ template <class Struct, class = typename Struct::unmanaged_type>
 typename Struct::unmanaged_type unmanaged( const Struct& s )
 {
     typename Struct::unmanaged_type u;
-    Struct::forEachViewOf(
-        []( const char*, auto& from, auto& to ) { to = from; }, s, u );
+    assignViews( s, u );
     return u;
 }
 

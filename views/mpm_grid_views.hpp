@@ -105,8 +105,7 @@ GridViews<ExecSpace, Kokkos::MemoryUnmanaged>
 unmanaged( const GridViews<ExecSpace>& gv )
 {
     GridViews<ExecSpace, Kokkos::MemoryUnmanaged> u;
-    GridViews<ExecSpace>::forEachViewOf(
-        []( const char*, auto& from, auto& to ) { to = from; }, gv, u );
+    assignViews( gv, u );
     u.geometry = gv.geometry;
     u.num_active = gv.num_active;
     return u;

@@ -24,32 +24,33 @@ ProbesConfig readProbes( const toml::table& table, const GridConfig* grid,
     if ( !points )
         return probes;
     std::set<std::string> names;
-    for ( std::size_t i = 0; i < points->size(); ++i )
-    {
-        const std::string path = "probes.points[" + std::to_string( i ) + "]";
-        TableReader p( *( *points )[i].as_table(), path, diag );
-        p.checkKeys( { "name", "position_m" }, "[[probes.points]]" );
-        ProbeConfig probe;
-        if ( const auto name = p.string( "name", Need::Required ) )
+    forEachTable(
+        *points, "probes.points", diag, { "name", "position_m" },
+        "[[probes.points]]",
+        [&]( TableReader& p )
         {
-            probe.name = *name;
-            if ( !names.insert( *name ).second )
-                diag.keyError( *p.find( "name" ), p.keyPath( "name" ),
-                               "the probe name '" + *name +
-                                   "' is used twice; names must be unique" );
-        }
-        if ( const auto x = p.point( "position_m", "m", Need::Required ) )
-        {
-            probe.position_m = *x;
-            const std::string outside =
-                grid ? outsideGridText( *grid, *x ) : "";
-            if ( !outside.empty() )
-                diag.keyError( *p.find( "position_m" ),
-                               p.keyPath( "position_m" ),
-                               "expected a point " + outside );
-        }
-        probes.points.push_back( probe );
-    }
+            ProbeConfig probe;
+            if ( const auto name = p.string( "name", Need::Required ) )
+            {
+                probe.name = *name;
+                if ( !names.insert( *name ).second )
+                    diag.keyError(
+                        *p.find( "name" ), p.keyPath( "name" ),
+                        "the probe name '" + *name +
+                            "' is used twice; names must be unique" );
+            }
+            if ( const auto x = p.point( "position_m", "m", Need::Required ) )
+            {
+                probe.position_m = *x;
+                const std::string outside =
+                    grid ? outsideGridText( *grid, *x ) : "";
+                if ( !outside.empty() )
+                    diag.keyError( *p.find( "position_m" ),
+                                   p.keyPath( "position_m" ),
+                                   "expected a point " + outside );
+            }
+            probes.points.push_back( probe );
+        } );
     return probes;
 }
 
