@@ -8,6 +8,9 @@
 
 #include <mpm_scatter.hpp>
 
+#include <array>
+#include <string>
+
 #include <Kokkos_Core.hpp>
 
 #include <benchmark/benchmark.h>
@@ -155,38 +158,47 @@ void stepSizes( benchmark::internal::Benchmark* b )
     b->Unit( benchmark::kMillisecond );
 }
 
-} // namespace
+//! Registers the three scatter kernels of one backend and scatter
+//! strategy as <kernel>/<tag>.
+template <class Space, class Duplication>
+void addScatterKernels( const std::string& tag )
+{
+    using mpm_bench::addBenchmark;
+    addBenchmark( "p2g/" + tag, BM_p2g<Space, Duplication>, kernelSizes );
+    addBenchmark( "p2g_grid_update/" + tag,
+                  BM_p2gGridUpdate<Space, Duplication>, kernelSizes );
+    addBenchmark( "g2p_remap/" + tag, BM_g2pRemap<Space, Duplication>,
+                  kernelSizes );
+}
 
-// clang-format off
+/*!
+  \brief Registers every kernel benchmark of one backend: the scatter
+  kernels with each scatter strategy (`tags` names them), the point update
+  and the step (whose scatter `step_tag` names).
+*/
+template <class Space, class... Duplications>
+bool addKernels(
+    const std::string& backend, const std::string& step_tag,
+    const std::array<const char*, sizeof...( Duplications )>& tags )
+{
+    int k = 0;
+    ( addScatterKernels<Space, Duplications>( backend + "/" + tags[k++] ),
+      ... );
+    mpm_bench::addBenchmark( "point_update/" + backend + "/none",
+                             BM_pointUpdate<Space>, kernelSizes );
+    mpm_bench::addBenchmark( "step/" + backend + "/" + step_tag, BM_step<Space>,
+                             stepSizes );
+    return true;
+}
+
 // Serial: the single-thread baseline (plain adds, no duplication).
-BENCHMARK_TEMPLATE( BM_p2g, Kokkos::Serial, KE::ScatterNonDuplicated )
-    ->Name( "p2g/Serial/plain" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_p2gGridUpdate, Kokkos::Serial, KE::ScatterNonDuplicated )
-    ->Name( "p2g_grid_update/Serial/plain" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_g2pRemap, Kokkos::Serial, KE::ScatterNonDuplicated )
-    ->Name( "g2p_remap/Serial/plain" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_pointUpdate, Kokkos::Serial )
-    ->Name( "point_update/Serial/none" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_step, Kokkos::Serial )
-    ->Name( "step/Serial/plain" )->Apply( stepSizes );
-
+const bool serial_kernels =
+    addKernels<Kokkos::Serial, KE::ScatterNonDuplicated>( "Serial", "plain",
+                                                          { "plain" } );
 #ifdef KOKKOS_ENABLE_OPENMP
 // OpenMP: both scatter strategies for the scatter kernels.
-BENCHMARK_TEMPLATE( BM_p2g, Kokkos::OpenMP, KE::ScatterDuplicated )
-    ->Name( "p2g/OpenMP/duplicated" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_p2g, Kokkos::OpenMP, KE::ScatterNonDuplicated )
-    ->Name( "p2g/OpenMP/atomic" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_p2gGridUpdate, Kokkos::OpenMP, KE::ScatterDuplicated )
-    ->Name( "p2g_grid_update/OpenMP/duplicated" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_p2gGridUpdate, Kokkos::OpenMP, KE::ScatterNonDuplicated )
-    ->Name( "p2g_grid_update/OpenMP/atomic" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_g2pRemap, Kokkos::OpenMP, KE::ScatterDuplicated )
-    ->Name( "g2p_remap/OpenMP/duplicated" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_g2pRemap, Kokkos::OpenMP, KE::ScatterNonDuplicated )
-    ->Name( "g2p_remap/OpenMP/atomic" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_pointUpdate, Kokkos::OpenMP )
-    ->Name( "point_update/OpenMP/none" )->Apply( kernelSizes );
-BENCHMARK_TEMPLATE( BM_step, Kokkos::OpenMP )
-    ->Name( "step/OpenMP/duplicated" )->Apply( stepSizes );
+const bool openmp_kernels =
+    addKernels<Kokkos::OpenMP, KE::ScatterDuplicated, KE::ScatterNonDuplicated>(
+        "OpenMP", "duplicated", { "duplicated", "atomic" } );
 #endif
-// clang-format on
+} // namespace

@@ -49,14 +49,7 @@ mpm::CaseConfig soilBlockCase( const int n )
                        { x_left, block_height_m } };
     c.bodies = { body };
 
-    mpm::BoundaryConfig left, right, bottom;
-    left.where = mpm::BoundarySelector::Left;
-    left.condition = mpm::BoundaryCondition::FixX;
-    right.where = mpm::BoundarySelector::Right;
-    right.condition = mpm::BoundaryCondition::FixX;
-    bottom.where = mpm::BoundarySelector::Bottom;
-    bottom.condition = mpm::BoundaryCondition::Fixed;
-    c.boundaries = { left, right, bottom };
+    c.boundaries = mpm::rollerSidesFixedBase();
 
     c.solver.courant_number = 0.5;
     c.solver.flip_fraction = 0.99;

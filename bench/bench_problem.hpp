@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <string>
 #include <vector>
 
 namespace mpm_bench
@@ -32,6 +33,15 @@ constexpr double preload_time_s = 0.03;
 
 //! The case of the soil block with n cells across its height.
 mpm::CaseConfig soilBlockCase( const int n );
+
+//! Registers benchmark `run` under `name`, with the sizes and reporting
+//! that `apply` sets.
+inline void addBenchmark( const std::string& name,
+                          void ( *run )( benchmark::State& ),
+                          void ( *apply )( benchmark::internal::Benchmark* ) )
+{
+    benchmark::RegisterBenchmark( name.c_str(), run )->Apply( apply );
+}
 
 //! Host copy of the state of the points after the preload.
 struct PreparedState

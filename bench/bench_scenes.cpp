@@ -190,49 +190,28 @@ void slopeReport( benchmark::internal::Benchmark* b )
     b->Unit( benchmark::kMicrosecond )->UseRealTime();
 }
 
-BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::Serial )
-    ->Name( "step_dry/Serial/plain" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::Serial )
-    ->Name( "step_saturated/Serial/plain" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::Serial )
-    ->Name( "step_unsaturated/Serial/plain" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_runStepDry, Kokkos::Serial )
-    ->Name( "run_step_dry/Serial/plain" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_runStepUnsaturated, Kokkos::Serial )
-    ->Name( "run_step_unsaturated/Serial/plain" )
-    ->Apply( threeSceneSizes );
-BENCHMARK_TEMPLATE( BM_runSlopeDry, Kokkos::Serial )
-    ->Name( "run_slope_dry/Serial/plain" )
-    ->Apply( slopeReport );
-BENCHMARK_TEMPLATE( BM_runSlopeUnsaturated, Kokkos::Serial )
-    ->Name( "run_slope_unsaturated/Serial/plain" )
-    ->Apply( slopeReport );
+//! Registers the scene benchmarks of one backend as <scene>/<tag>.
+template <class Space>
+bool addScenes( const std::string& tag )
+{
+    using mpm_bench::addBenchmark;
+    addBenchmark( "step_dry/" + tag, BM_stepDry<Space>, sceneSizes );
+    addBenchmark( "step_saturated/" + tag, BM_stepSaturated<Space>,
+                  sceneSizes );
+    addBenchmark( "step_unsaturated/" + tag, BM_stepUnsaturated<Space>,
+                  sceneSizes );
+    addBenchmark( "run_step_dry/" + tag, BM_runStepDry<Space>, sceneSizes );
+    addBenchmark( "run_step_unsaturated/" + tag, BM_runStepUnsaturated<Space>,
+                  threeSceneSizes );
+    addBenchmark( "run_slope_dry/" + tag, BM_runSlopeDry<Space>, slopeReport );
+    addBenchmark( "run_slope_unsaturated/" + tag, BM_runSlopeUnsaturated<Space>,
+                  slopeReport );
+    return true;
+}
+
+const bool serial_scenes = addScenes<Kokkos::Serial>( "Serial/plain" );
 #ifdef KOKKOS_ENABLE_OPENMP
-BENCHMARK_TEMPLATE( BM_stepDry, Kokkos::OpenMP )
-    ->Name( "step_dry/OpenMP/duplicated" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_stepSaturated, Kokkos::OpenMP )
-    ->Name( "step_saturated/OpenMP/duplicated" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_stepUnsaturated, Kokkos::OpenMP )
-    ->Name( "step_unsaturated/OpenMP/duplicated" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_runStepDry, Kokkos::OpenMP )
-    ->Name( "run_step_dry/OpenMP/duplicated" )
-    ->Apply( sceneSizes );
-BENCHMARK_TEMPLATE( BM_runStepUnsaturated, Kokkos::OpenMP )
-    ->Name( "run_step_unsaturated/OpenMP/duplicated" )
-    ->Apply( threeSceneSizes );
-BENCHMARK_TEMPLATE( BM_runSlopeDry, Kokkos::OpenMP )
-    ->Name( "run_slope_dry/OpenMP/duplicated" )
-    ->Apply( slopeReport );
-BENCHMARK_TEMPLATE( BM_runSlopeUnsaturated, Kokkos::OpenMP )
-    ->Name( "run_slope_unsaturated/OpenMP/duplicated" )
-    ->Apply( slopeReport );
+const bool openmp_scenes = addScenes<Kokkos::OpenMP>( "OpenMP/duplicated" );
 #endif
 
 } // namespace

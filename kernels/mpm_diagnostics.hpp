@@ -35,27 +35,15 @@ struct StepDiagnostics
 template <class ExecSpace>
 struct PointSoundness
 {
-    using pv_type = ParticleViews<ExecSpace>;
-    using wv_type = WaterParticleViews<ExecSpace>;
-    UnmanagedView<typename pv_type::vector_view> x_p;
-    UnmanagedView<typename pv_type::tensor_view> sigma_p;
-    UnmanagedView<typename pv_type::tensor_view> eps_p;
-    UnmanagedView<typename pv_type::scalar_view> eps_p_bar_p;
-    UnmanagedView<typename pv_type::scalar_view> vol_p;
+    typename ParticleViews<ExecSpace>::unmanaged_type points;
+    typename WaterParticleViews<ExecSpace>::unmanaged_type water_points;
     bool two_phase;
-    UnmanagedView<typename wv_type::scalar_view> p_w_p;
-    UnmanagedView<typename wv_type::vector_view> v_w_p;
 
     PointSoundness( const ParticleViews<ExecSpace>& pv,
                     const WaterParticleViews<ExecSpace>& wv )
-        : x_p( pv.x_p )
-        , sigma_p( pv.sigma_p )
-        , eps_p( pv.eps_p )
-        , eps_p_bar_p( pv.eps_p_bar_p )
-        , vol_p( pv.vol_p )
+        : points( unmanaged( pv ) )
+        , water_points( unmanaged( wv ) )
         , two_phase( wv.allocated() )
-        , p_w_p( wv.p_w_p )
-        , v_w_p( wv.v_w_p )
     {
     }
 
@@ -66,14 +54,32 @@ struct PointSoundness
         namespace KE = Kokkos::Experimental;
         // Any NaN or infinity makes the sum non-finite.
         const double sum =
-            x_p( p, 0 ) + x_p( p, 1 ) + sigma_p( p, 0 ) + sigma_p( p, 1 ) +
-            sigma_p( p, 2 ) + sigma_p( p, 3 ) + eps_p( p, 0 ) + eps_p( p, 1 ) +
-            eps_p( p, 2 ) + eps_p( p, 3 ) + eps_p_bar_p( p ) + vol_p( p ) +
-            ( two_phase ? p_w_p( p ) + v_w_p( p, 0 ) + v_w_p( p, 1 ) : 0.0 );
+            points.x_p( p, 0 ) + points.x_p( p, 1 ) + points.sigma_p( p, 0 ) +
+            points.sigma_p( p, 1 ) + points.sigma_p( p, 2 ) +
+            points.sigma_p( p, 3 ) + points.eps_p( p, 0 ) +
+            points.eps_p( p, 1 ) + points.eps_p( p, 2 ) + points.eps_p( p, 3 ) +
+            points.eps_p_bar_p( p ) + points.vol_p( p ) +
+            ( two_phase ? water_points.p_w_p( p ) + water_points.v_w_p( p, 0 ) +
+                              water_points.v_w_p( p, 1 )
+                        : 0.0 );
         return KE::isfinite( sum ) && KE::isfinite( speed2 ) &&
-               vol_p( p ) > 0.0;
+               points.vol_p( p ) > 0.0;
     }
 };
+
+//---------------------------------------------------------------------------//
+//! Squared length a^2 + b^2 of a 2-vector.
+KOKKOS_INLINE_FUNCTION double length2( const double a, const double b )
+{
+    return a * a + b * b;
+}
+
+//! Squared solid speed |v_p|^2 of point p, m^2/s^2.
+template <class Points>
+KOKKOS_INLINE_FUNCTION double speed2( const Points& points, const int p )
+{
+    return length2( points.v_p( p, 0 ), points.v_p( p, 1 ) );
+}
 
 //---------------------------------------------------------------------------//
 //! Total kinetic energy sum 0.5 m_p |v_p|^2, J (per metre out of plane).
@@ -88,9 +94,7 @@ double kineticEnergy( const ExecSpace& exec_space,
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, double& sum ) {
             if ( points.status_p( p ) == point_active )
-                sum += 0.5 * points.m_p( p ) *
-                       ( points.v_p( p, 0 ) * points.v_p( p, 0 ) +
-                         points.v_p( p, 1 ) * points.v_p( p, 1 ) );
+                sum += 0.5 * points.m_p( p ) * speed2( points, p );
         },
         Kokkos::Sum<double>( energy ) );
     return energy;
@@ -123,10 +127,8 @@ double maxPointSpeed( const ExecSpace& exec_space,
 {
     const auto points = unmanaged( pv );
     return maxLengthOverActivePoints(
-        exec_space, "mpm::max_point_speed", pv, KOKKOS_LAMBDA( const int p ) {
-            return points.v_p( p, 0 ) * points.v_p( p, 0 ) +
-                   points.v_p( p, 1 ) * points.v_p( p, 1 );
-        } );
+        exec_space, "mpm::max_point_speed", pv,
+        KOKKOS_LAMBDA( const int p ) { return speed2( points, p ); } );
 }
 
 /*!
@@ -140,15 +142,14 @@ long countPointsNotBelowSpeed( const ExecSpace& exec_space,
                                const double speed )
 {
     const auto points = unmanaged( pv );
-    const double speed2 = speed * speed;
+    const double limit2 = speed * speed;
     long count = 0;
     Kokkos::parallel_reduce(
         "mpm::count_points_not_below_speed",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
         KOKKOS_LAMBDA( const int p, long& n ) {
-            const double v2 = points.v_p( p, 0 ) * points.v_p( p, 0 ) +
-                              points.v_p( p, 1 ) * points.v_p( p, 1 );
-            if ( points.status_p( p ) == point_active && !( v2 < speed2 ) )
+            if ( points.status_p( p ) == point_active &&
+                 !( speed2( points, p ) < limit2 ) )
                 ++n;
         },
         count );
@@ -163,9 +164,8 @@ double maxDisplacement( const ExecSpace& exec_space,
     const auto points = unmanaged( pv );
     return maxLengthOverActivePoints(
         exec_space, "mpm::max_displacement", pv, KOKKOS_LAMBDA( const int p ) {
-            const double u_x = points.x_p( p, 0 ) - points.x0_p( p, 0 );
-            const double u_y = points.x_p( p, 1 ) - points.x0_p( p, 1 );
-            return u_x * u_x + u_y * u_y;
+            return length2( points.x_p( p, 0 ) - points.x0_p( p, 0 ),
+                            points.x_p( p, 1 ) - points.x0_p( p, 1 ) );
         } );
 }
 
@@ -192,8 +192,7 @@ int findUnstablePoint( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int p, int& first_bad ) {
             if ( points.status_p( p ) != point_active )
                 return;
-            const double speed2 = points.v_p( p, 0 ) * points.v_p( p, 0 ) +
-                                  points.v_p( p, 1 ) * points.v_p( p, 1 );
+            const double speed2 = mpm::speed2( points, p );
             const bool bad =
                 !sound( p, speed2 ) || speed2 > speed_limit * speed_limit;
             if ( bad && p < first_bad )

@@ -109,11 +109,8 @@ PointUpdateReport updatePoints(
                 if ( cfl_limit )
                     addPointLimit( wave_speed, q, *params[l], cell_size, dt_min,
                                    c_max );
-                energy += 0.5 * points.m_p( q ) *
-                          ( points.v_p( q, 0 ) * points.v_p( q, 0 ) +
-                            points.v_p( q, 1 ) * points.v_p( q, 1 ) );
-                const double speed2 = points.v_p( q, 0 ) * points.v_p( q, 0 ) +
-                                      points.v_p( q, 1 ) * points.v_p( q, 1 );
+                const double speed2 = mpm::speed2( points, q );
+                energy += 0.5 * points.m_p( q ) * speed2;
                 if ( !sound( q, speed2 ) )
                     first_unsound = q < first_unsound ? q : first_unsound;
                 else

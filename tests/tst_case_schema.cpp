@@ -1,15 +1,18 @@
-// The declared case keys (src/io/mpm_case_schema.hpp) against their
-// documentation: docs/case-file.md lists every key of [solver] and [water]
-// in its table with the type, default and range the reader uses, and no
-// other key.
+// The declared case keys (src/io/mpm_case_schema.hpp, mpm_case_keys.hpp)
+// against their documentation: docs/case-file.md lists every key of every
+// table in that table's section, and no other key; for [solver] and [water]
+// with the type, default and range the reader uses.
 #include <io/mpm_case_config.hpp>
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_schema.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -127,6 +130,28 @@ TEST( CaseSchema, solver_keys_are_documented )
 TEST( CaseSchema, water_keys_are_documented )
 {
     expectDocumented( mpm::Impl::waterKeys(), "## `[water]`" );
+}
+
+// Every table's section (## or ### `table`) lists exactly the keys the
+// reader accepts.
+TEST( CaseSchema, every_table_is_documented )
+{
+    for ( const auto& [table, keys] : mpm::Impl::caseTableKeys() )
+    {
+        SCOPED_TRACE( table );
+        auto documented = documentedKeys( "## `" + table + "`" );
+        if ( documented.empty() )
+            documented = documentedKeys( "### `" + table + "`" );
+        ASSERT_FALSE( documented.empty() ) << "no section with a key table";
+        for ( const std::string& key : keys )
+            EXPECT_EQ( documented.count( key ), 1u )
+                << "not documented: " << key;
+        for ( const auto& entry : documented )
+            EXPECT_NE( std::find( keys.begin(), keys.end(), entry.first ),
+                       keys.end() )
+                << "documented but not read: " << entry.first;
+    }
+    EXPECT_THROW( mpm::Impl::keysOf( "[nothing]" ), std::logic_error );
 }
 
 } // namespace

@@ -12,35 +12,32 @@
 
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 namespace
 {
 //! The Views of one struct: components per point of each, by name.
-template <class Views, class Visit>
-std::map<std::string, int> viewComponents( const Views& views, Visit visit )
+template <class Views>
+std::map<std::string, int> viewComponents( const Views& views )
 {
     std::map<std::string, int> components;
-    visit( views,
-           [&]( const char* name, const auto& view )
-           {
-               int c = 1;
-               for ( unsigned r = 1; r < view.rank; ++r )
-                   c *= static_cast<int>( view.extent( r ) );
-               components[name] = c;
-           } );
+    mpm::forEachView( views,
+                      [&]( const char* name, const auto& view )
+                      {
+                          int c = 1;
+                          for ( unsigned r = 1; r < view.rank; ++r )
+                              c *= static_cast<int>( view.extent( r ) );
+                          components[name] = c;
+                      } );
     return components;
 }
 
 TEST( PointFields, every_output_field_names_a_view )
 {
     using Space = Kokkos::DefaultHostExecutionSpace;
-    const auto solid = viewComponents( mpm::ParticleViews<Space>( 1 ),
-                                       []( const auto& v, auto&& f )
-                                       { mpm::forEachParticleView( v, f ); } );
-    const auto water = viewComponents(
-        mpm::WaterParticleViews<Space>( 1 ), []( const auto& v, auto&& f )
-        { mpm::forEachWaterParticleView( v, f ); } );
+    const auto solid = viewComponents( mpm::ParticleViews<Space>( 1 ) );
+    const auto water = viewComponents( mpm::WaterParticleViews<Space>( 1 ) );
     std::set<std::string> names;
     for ( const mpm::PointField& f : mpm::pointFields() )
     {
@@ -68,6 +65,30 @@ TEST( PointFields, every_output_field_names_a_view )
         EXPECT_EQ( mpm::snapshotMemberOf<int>( f.view ), f.values );
     }
     EXPECT_EQ( mpm::snapshotMemberOf<double>( "du_p" ), nullptr );
+}
+
+//---------------------------------------------------------------------------//
+// A probed field names one probes.csv column per component, each column
+// once; the fields in messages are named once too.
+TEST( PointFields, probe_columns_match_components )
+{
+    std::set<std::string> columns, labels;
+    for ( const mpm::PointField& f : mpm::pointFields() )
+    {
+        SCOPED_TRACE( f.name );
+        EXPECT_TRUE( labels.insert( f.label ).second ) << "repeated label";
+        if ( !f.probe_columns )
+            continue;
+        std::stringstream split( f.probe_columns );
+        int count = 0;
+        for ( std::string column; std::getline( split, column, ',' ); ++count )
+        {
+            EXPECT_FALSE( column.empty() );
+            EXPECT_TRUE( columns.insert( column ).second ) << column;
+        }
+        EXPECT_EQ( count, f.components );
+    }
+    EXPECT_EQ( columns.size(), 11u ) << "x, u, v, eps_p_bar, p_w, S, v_w";
 }
 
 } // namespace

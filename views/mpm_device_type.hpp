@@ -77,6 +77,16 @@ void assignViews( const From& from, To& to )
                          from, to );
 }
 
+//! Deep-copies every View of `from` into the same View of `to` (the same
+//! struct in another execution space, e.g. its host twin).
+template <class From, class To>
+void copyViews( const From& from, To& to )
+{
+    From::forEachViewOf( []( const char*, auto& view_from, auto& view_to )
+                         { Kokkos::deep_copy( view_to, view_from ); },
+                         from, to );
+}
+
 /*!
   \brief The unmanaged twin of a View struct, for kernel closures (see
   unmanaged(view)): the same Views without reference counting. Plain

@@ -90,14 +90,6 @@ struct GridViews
     }
 };
 
-//---------------------------------------------------------------------------//
-//! Calls f(name, view) for every View of GridViews (forEachView).
-template <class Views, class F>
-void forEachGridView( Views& gv, F&& f )
-{
-    forEachView( gv, f );
-}
-
 //! The same Views, geometry and active-node count, unmanaged, for kernel
 //! closures (see unmanaged(view)).
 template <class ExecSpace>

@@ -84,14 +84,6 @@ struct ParticleViews
 template <class ExecSpace>
 using LoadForceView = Kokkos::View<double* [2], DeviceType<ExecSpace>>;
 
-//---------------------------------------------------------------------------//
-//! Calls f(name, view) for every View of ParticleViews (forEachView).
-template <class Views, class F>
-void forEachParticleView( Views& pv, F&& f )
-{
-    forEachView( pv, f );
-}
-
 } // namespace mpm
 
 #endif // MPM_PARTICLE_VIEWS_HPP

@@ -129,21 +129,6 @@ struct WaterGridViews
     }
 };
 
-//---------------------------------------------------------------------------//
-//! Calls f(name, view) for every View of WaterParticleViews (forEachView).
-template <class Views, class F>
-void forEachWaterParticleView( Views& wv, F&& f )
-{
-    forEachView( wv, f );
-}
-
-//! Calls f(name, view) for every View of WaterGridViews (forEachView).
-template <class Views, class F>
-void forEachWaterGridView( Views& wg, F&& f )
-{
-    forEachView( wg, f );
-}
-
 } // namespace mpm
 
 #endif // MPM_WATER_VIEWS_HPP

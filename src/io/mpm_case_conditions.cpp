@@ -1,4 +1,5 @@
 #include <io/mpm_case_conditions.hpp>
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
 
@@ -186,8 +187,7 @@ std::vector<BoundaryConfig> readBoundaries( const toml::array& array,
 {
     std::vector<BoundaryConfig> result;
     forEachTable(
-        array, prefix, diag,
-        { "where", "condition", "hydraulic", "polyline_m" },
+        array, prefix, diag, keysOf( "[[boundaries]]" ),
         prefix == "boundaries" ? "[[boundaries]]" : "[[stages.boundaries]]",
         [&]( TableReader& r )
         {
@@ -262,10 +262,8 @@ std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
                                                       Diagnostics& diag )
 {
     std::vector<PorePressureCondition> result;
-    forEachTable(
-        array, prefix, diag,
-        { "where", "box_m", "pressure_pa", "hold", "time_function" },
-        "[[stages.pore_pressures]]",
+    forEachTableOf(
+        "[[stages.pore_pressures]]", array, prefix, diag,
         [&]( TableReader& r )
         {
             PorePressureCondition condition;
@@ -301,10 +299,8 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix, Diagnostics& diag )
 {
     std::vector<PointLoad> result;
-    forEachTable(
-        array, prefix, diag,
-        { "where", "box_m", "traction_pa", "length_m", "time_function" },
-        "[[stages.loads]]",
+    forEachTableOf(
+        "[[stages.loads]]", array, prefix, diag,
         [&]( TableReader& r )
         {
             PointLoad load;
@@ -326,9 +322,7 @@ StaticStop readStaticStop( const toml::table& table, const std::string& path,
                            const bool quasi_static, Diagnostics& diag )
 {
     TableReader r( table, path, diag );
-    r.checkKeys( { "static_speed_m_per_s", "slide_displacement_m", "window_s",
-                   "speed_percentile" },
-                 "[stages.static_stop]" );
+    checkTableKeys( r, "[stages.static_stop]" );
     StaticStop stop;
     if ( quasi_static )
     {

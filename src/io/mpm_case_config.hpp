@@ -237,6 +237,20 @@ struct BoundaryConfig
     std::vector<Point2> polyline_m;
 };
 
+//! The boundaries of a soil box: rollers on the left and right grid edges
+//! (x fixed), the base fixed.
+inline std::vector<BoundaryConfig> rollerSidesFixedBase()
+{
+    BoundaryConfig left, right, bottom;
+    left.where = BoundarySelector::Left;
+    left.condition = BoundaryCondition::FixX;
+    right.where = BoundarySelector::Right;
+    right.condition = BoundaryCondition::FixX;
+    bottom.where = BoundarySelector::Bottom;
+    bottom.condition = BoundaryCondition::Fixed;
+    return { left, right, bottom };
+}
+
 enum class StageType
 {
     QuasiStatic, //!< damped, runs until the kinetic-energy ratio is small

@@ -1,4 +1,5 @@
 #include <io/mpm_case_conditions.hpp>
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
 #include <setup/mpm_polyline_cells.hpp>
@@ -94,11 +95,8 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                                       Diagnostics& diag )
 {
     std::vector<WaterInflow> result;
-    forEachTable(
-        array, prefix, diag,
-        { "where", "box_m", "polyline_m", "measured_on", "flux_m_per_s",
-          "length_m", "time_function", "ponding", "follow_surface_s" },
-        "[[stages.inflows]]",
+    forEachTableOf(
+        "[[stages.inflows]]", array, prefix, diag,
         [&]( TableReader& r )
         {
             WaterInflow inflow;

@@ -1,3 +1,4 @@
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_probes.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
@@ -15,7 +16,7 @@ ProbesConfig readProbes( const toml::table& table, const GridConfig* grid,
 {
     ProbesConfig probes;
     TableReader r( table, "probes", diag );
-    r.checkKeys( { "interval_s", "points" }, "[probes]" );
+    checkTableKeys( r, "[probes]" );
     probes.interval_s =
         r.number( "interval_s", Range::above( 0.0 ), "s", Need::Required )
             .value_or( 0.0 );

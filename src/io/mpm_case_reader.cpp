@@ -3,6 +3,7 @@
 #include <io/mpm_case_file.hpp>
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_case_include.hpp>
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_limits.hpp>
 #include <io/mpm_case_materials.hpp>
 #include <io/mpm_case_overrides.hpp>
@@ -24,7 +25,6 @@ namespace
 using Impl::Diagnostics;
 using Impl::finishMaterial;
 using Impl::MaterialDraft;
-using Impl::materialKeys;
 using Impl::Need;
 using Impl::Range;
 using Impl::readMaterialValues;
@@ -54,7 +54,7 @@ class CaseParser
         if ( const auto* t = root.subTable( "particles", Need::Optional ) )
         {
             TableReader r( *t, "particles", _diag );
-            r.checkKeys( { "points_per_cell" }, "[particles]" );
+            Impl::checkTableKeys( r, "[particles]" );
             _config.points_per_cell_per_direction =
                 r.integer( "points_per_cell", 1, 6, Need::Optional )
                     .value_or( _config.points_per_cell_per_direction );
@@ -119,7 +119,7 @@ class CaseParser
         if ( !t )
             return;
         TableReader r( *t, "grid", _diag );
-        r.checkKeys( { "origin_m", "cell_size_m", "cells" }, "[grid]" );
+        Impl::checkTableKeys( r, "[grid]" );
         const auto origin = r.point( "origin_m", "m", Need::Required );
         const auto h =
             r.number( "cell_size_m", Range::above( 0.0 ), "m", Need::Required );
@@ -175,8 +175,8 @@ class CaseParser
             _diag.mismatch( *arr, "materials",
                             "at least one material ([[materials]] table)" );
         std::map<std::string, std::string> first_path;
-        Impl::forEachTable(
-            *arr, "materials", _diag, materialKeys(), "[[materials]]",
+        Impl::forEachTableOf(
+            "[[materials]]", *arr, "materials", _diag,
             [&]( TableReader& r )
             {
                 MaterialDraft draft;
@@ -216,12 +216,8 @@ class CaseParser
             return;
         if ( arr->empty() )
             _diag.mismatch( *arr, "bodies", "at least one [[bodies]] table" );
-        Impl::forEachTable(
-            *arr, "bodies", _diag,
-            { "material", "polygon_m", "initial_pore_pressure_pa",
-              "initial_pore_pressure_gradient_pa_per_m",
-              "initial_pore_pressure_profile" },
-            "[[bodies]]",
+        Impl::forEachTableOf(
+            "[[bodies]]", *arr, "bodies", _diag,
             [&]( TableReader& r )
             {
                 const std::string& path = r.path();
@@ -257,13 +253,8 @@ class CaseParser
         if ( arr->empty() )
             _diag.mismatch( *arr, "stages", "at least one [[stages]] table" );
         std::map<std::string, std::string> first_path;
-        Impl::forEachTable(
-            *arr, "stages", _diag,
-            { "name", "type", "gravity_m_per_s2", "damping", "duration_s",
-              "ke_ratio_tolerance", "snapshot_interval_s", "snapshot_times_s",
-              "static_stop", "reset_displacement", "materials", "boundaries",
-              "pore_pressures", "loads", "inflows" },
-            "[[stages]]",
+        Impl::forEachTableOf(
+            "[[stages]]", *arr, "stages", _diag,
             [&]( TableReader& r )
             {
                 const std::string& path = r.path();
@@ -328,7 +319,7 @@ class CaseParser
                 continue;
             }
             TableReader r( *node.as_table(), sub_path, _diag );
-            auto keys = materialKeys();
+            auto keys = Impl::keysOf( "[[materials]]" );
             keys.erase( std::find( keys.begin(), keys.end(), "name" ) );
             r.checkKeys( keys, "a stage material override", { "name" } );
             if ( const auto* n = r.find( "name" ) )

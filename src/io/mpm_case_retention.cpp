@@ -1,3 +1,4 @@
+#include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_retention.hpp>
 #include <io/mpm_toml_access.hpp>
 
@@ -106,7 +107,7 @@ std::optional<RetentionConfig> readRetention( const toml::table& table,
 {
     const std::size_t errors_before = diag.count();
     TableReader r( table, path, diag );
-    r.checkKeys( retentionKeys(), "a retention table" );
+    r.checkKeys( keysOf( "[materials.retention]" ), "a retention table" );
     const auto model =
         r.choice( "model", retention_model_names, Need::Required );
     RetentionConfig law;

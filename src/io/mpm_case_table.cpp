@@ -1,5 +1,6 @@
 #include <io/mpm_case_analysis.hpp>
 #include <io/mpm_case_diagnostics.hpp>
+#include <io/mpm_case_keys.hpp>
 
 #include <algorithm>
 #include <string>
@@ -18,8 +19,7 @@ Analysis readCaseTable( TableReader& root, Diagnostics& diag,
     if ( !t )
         return analysis;
     TableReader r( *t, "case", diag );
-    const std::vector<std::string> keys = { "name", "description", "analysis" };
-    r.checkKeys( keys, "[case]" );
+    checkTableKeys( r, "[case]" );
     if ( const auto name = r.string( "name", Need::Required ) )
     {
         const bool valid =
@@ -39,8 +39,8 @@ Analysis readCaseTable( TableReader& root, Diagnostics& diag,
         analysis.reset(); // invalid: skip the checks that depend on it
     else
         for ( auto&& entry : *t )
-            if ( closestWord( std::string( entry.first.str() ), keys ) ==
-                 "analysis" )
+            if ( closestWord( std::string( entry.first.str() ),
+                              keysOf( "[case]" ) ) == "analysis" )
                 analysis.reset(); // misspelt key: as invalid
     config.analysis = analysis.value_or( AnalysisType::Dry );
     return analysis;

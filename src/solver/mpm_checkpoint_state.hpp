@@ -15,10 +15,9 @@
 namespace mpm
 {
 //---------------------------------------------------------------------------//
-// The Views a checkpoint holds: every View of the point structs
-// (forEachParticleView, forEachWaterParticleView, forEachGridView,
-// forEachWaterGridView, next to the structs in views/). A View added to one
-// of these structs must be added to its list (the test
+// The Views a checkpoint holds: every View of the point and grid structs
+// (each struct's forEachViewOf in views/). A View added to one of these
+// structs must be added to its list (the test
 // Restart.checkpoint_lists_every_point_view checks the point structs). Grid
 // Views are mostly rebuilt every step, but v_i / dv_i keep their values on
 // nodes that lost their mass and the velocity gradient reads them, so all are
@@ -34,12 +33,12 @@ void forEachStateView( Sim& sim, F&& f )
         return [&f, group]( const char* name, auto& view )
         { f( group + "/" + name, view ); };
     };
-    forEachParticleView( sim.particles, in( "particles" ) );
-    forEachGridView( sim.grid, in( "grid" ) );
+    forEachView( sim.particles, in( "particles" ) );
+    forEachView( sim.grid, in( "grid" ) );
     if ( sim.twoPhase() )
     {
-        forEachWaterParticleView( sim.water_particles, in( "water" ) );
-        forEachWaterGridView( sim.water_grid, in( "water_grid" ) );
+        forEachView( sim.water_particles, in( "water" ) );
+        forEachView( sim.water_grid, in( "water_grid" ) );
     }
 }
 

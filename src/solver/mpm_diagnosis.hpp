@@ -3,97 +3,95 @@
 
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
-
-#include <Kokkos_Core.hpp>
+#include <records/mpm_point_fields.hpp>
+#include <solver/mpm_host_snapshot.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 
 namespace mpm
 {
-//! Host copy of a View (a separate allocation on host backends too).
-template <class ViewType>
-auto hostCopy( const ViewType& view )
+//---------------------------------------------------------------------------//
+//! The values of registry field `field` of point p in `snap`, or null if
+//! the snapshot lacks the field (a water field in a dry scene).
+inline const double* pointValues( const HostSnapshot& snap,
+                                  const PointField& field, const int p )
 {
-    return Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
+    const std::vector<double>& values = snap.*field.values;
+    return values.empty() ? nullptr : values.data() + p * field.components;
+}
+
+//! Whether every component of `field` of point p in `snap` is finite.
+inline bool finiteField( const HostSnapshot& snap, const PointField& field,
+                         const int p )
+{
+    const double* values = pointValues( snap, field, p );
+    for ( int c = 0; values && c < field.components; ++c )
+        if ( !std::isfinite( values[c] ) )
+            return false;
+    return true;
 }
 
 //---------------------------------------------------------------------------//
-//! Diagnosis of one point: id, position, velocity, stress (and pore
-//! pressure in two-phase scenes), step and time.
+//! Diagnosis of one point: its id, step and time, and every field of the
+//! point-field registry (water fields in two-phase scenes) with its unit.
 template <class ExecSpace>
 std::string describePoint( const ParticleViews<ExecSpace>& pv,
                            const WaterParticleViews<ExecSpace>& wv, const int p,
                            const std::string& what, const long step,
                            const double time )
 {
-    const auto x = hostCopy( pv.x_p );
-    const auto v = hostCopy( pv.v_p );
-    const auto s = hostCopy( pv.sigma_p );
-    const auto vol = hostCopy( pv.vol_p );
-    const auto id = hostCopy( pv.id_p );
+    const HostSnapshot snap = hostSnapshot( pv, wv );
     std::ostringstream msg;
-    msg << "material point " << id( p ) << " " << what << "\n"
-        << "  at step " << step << ", t = " << time << " s\n"
-        << "  position (" << x( p, 0 ) << ", " << x( p, 1 ) << ") m\n"
-        << "  velocity (" << v( p, 0 ) << ", " << v( p, 1 ) << ") m/s\n"
-        << "  stress xx, yy, xy, zz (" << s( p, 0 ) << ", " << s( p, 1 ) << ", "
-        << s( p, 2 ) << ", " << s( p, 3 ) << ") Pa\n"
-        << "  volume " << vol( p ) << " m^3/m";
-    if ( wv.allocated() )
+    msg << "material point " << snap.id[p] << " " << what << "\n"
+        << "  at step " << step << ", t = " << time << " s";
+    for ( const PointField& field : pointFields() )
     {
-        const auto p_w = hostCopy( wv.p_w_p );
-        const auto S = hostCopy( wv.S_p );
-        const auto v_w = hostCopy( wv.v_w_p );
-        msg << "\n  pore pressure " << p_w( p ) << " Pa, saturation " << S( p )
-            << ", water velocity (" << v_w( p, 0 ) << ", " << v_w( p, 1 )
-            << ") m/s";
+        const double* values = pointValues( snap, field, p );
+        if ( !values )
+            continue;
+        const bool tensor = field.components == 4;
+        msg << "\n  " << field.label << ( tensor ? " xx, yy, xy, zz " : " " )
+            << ( field.components > 1 ? "(" : "" );
+        for ( int c = 0; c < field.components; ++c )
+            msg << ( c > 0 ? ", " : "" ) << values[c];
+        msg << ( field.components > 1 ? ")" : "" );
+        if ( std::strcmp( field.unit, "-" ) != 0 )
+            msg << " " << field.unit;
     }
     return msg.str();
 }
 
-//! Whether every component of row p of a host tensor view is finite.
-template <class HostView>
-bool finiteRow( const HostView& v, const int p )
-{
-    for ( std::size_t c = 0; c < v.extent( 1 ); ++c )
-        if ( !std::isfinite( v( p, c ) ) )
-            return false;
-    return true;
-}
-
-//! Which quantity of point p is unstable, with its value.
+//---------------------------------------------------------------------------//
+//! Which quantity of point p is unstable, with its value: the first field
+//! of the registry that is not finite, else a speed above `speed_limit` or
+//! a volume that is not positive.
 template <class ExecSpace>
 std::string unstableQuantity( const ParticleViews<ExecSpace>& pv,
                               const WaterParticleViews<ExecSpace>& wv,
                               const int p, const double speed_limit,
                               const double speed_factor )
 {
-    const auto x = hostCopy( pv.x_p );
-    const auto v = hostCopy( pv.v_p );
-    const auto vol = hostCopy( pv.vol_p );
+    const HostSnapshot snap = hostSnapshot( pv, wv );
     std::ostringstream what;
-    const double speed = std::hypot( v( p, 0 ), v( p, 1 ) );
-    if ( !std::isfinite( x( p, 0 ) ) || !std::isfinite( x( p, 1 ) ) )
-        what << "position is not finite";
-    else if ( !std::isfinite( speed ) )
-        what << "velocity is not finite";
-    else if ( speed > speed_limit )
+    for ( const PointField& field : pointFields() )
+        if ( !finiteField( snap, field, p ) )
+        {
+            what << field.label << " is not finite";
+            return what.str();
+        }
+    const double speed = std::hypot( snap.v[2 * p], snap.v[2 * p + 1] );
+    const double vol = snap.vol[p];
+    if ( speed > speed_limit )
         what << "speed " << speed << " m/s exceeds " << speed_limit << " m/s ("
              << speed_factor << " x the largest wave speed)";
-    else if ( !( vol( p ) > 0.0 ) || !std::isfinite( vol( p ) ) )
-        what << "volume " << vol( p ) << " m^3/m is not positive and finite";
-    else if ( wv.allocated() && !std::isfinite( hostCopy( wv.p_w_p )( p ) ) )
-        what << "pore pressure is not finite";
-    else if ( !finiteRow( hostCopy( pv.sigma_p ), p ) )
-        what << "stress is not finite";
-    else if ( !finiteRow( hostCopy( pv.eps_p ), p ) )
-        what << "strain is not finite";
-    else if ( !std::isfinite( hostCopy( pv.eps_p_bar_p )( p ) ) )
-        what << "plastic shear strain (eps_p_bar) is not finite";
+    else if ( !( vol > 0.0 ) )
+        what << "volume " << vol << " m^3/m is not positive";
     else
-        what << "water velocity is not finite";
+        what << "no quantity is out of range on the host (the device check "
+                "disagrees)";
     return what.str();
 }
 

@@ -5,6 +5,7 @@
 #include <records/mpm_point_fields.hpp>
 #include <records/mpm_stage_state.hpp>
 #include <solver/mpm_checkpoint_state.hpp>
+#include <solver/mpm_host_snapshot.hpp>
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
 #include <solver/mpm_static_stop.hpp>
@@ -21,38 +22,11 @@
 namespace mpm
 {
 //---------------------------------------------------------------------------//
-//! Host copy of the output's point fields (pointFields, intPointFields) of
-//! a simulation; the water fields only in a two-phase scene.
-//! Copies a View into a host vector (point-major).
-template <class View, class T>
-void copyToHost( const View& view, std::vector<T>& out )
-{
-    const auto h =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), view );
-    out.assign( h.data(), h.data() + h.span() );
-}
-
+//! Host copy of the output's point fields of a simulation (hostSnapshot).
 template <class ExecSpace>
 HostSnapshot hostSnapshot( const Simulation<ExecSpace>& sim )
 {
-    HostSnapshot snap;
-    snap.num_points = sim.particles.size();
-    const auto take = [&]( const char* name, const auto& view )
-    {
-        using value_type =
-            typename std::decay_t<decltype( view )>::non_const_value_type;
-        if ( const auto member = snapshotMemberOf<value_type>( name ) )
-            copyToHost( view, snap.*member );
-    };
-    forEachParticleView( sim.particles, take );
-    if ( sim.twoPhase() )
-        forEachWaterParticleView( sim.water_particles, take );
-    std::vector<double> x0;
-    copyToHost( sim.particles.x0_p, x0 );
-    snap.displacement.resize( x0.size() );
-    for ( std::size_t k = 0; k < x0.size(); ++k )
-        snap.displacement[k] = snap.x[k] - x0[k];
-    return snap;
+    return hostSnapshot( sim.particles, sim.water_particles );
 }
 
 //---------------------------------------------------------------------------//

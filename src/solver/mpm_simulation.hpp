@@ -109,8 +109,7 @@ class Simulation
         else
             _dry_step = DryStepPhases<ExecSpace>( grid.geometry );
 
-        initialiseParticles( config, points, particles, water_particles,
-                             water );
+        initialiseParticles( config, points, particles, water_particles );
         if ( !config.stages.empty() )
             applyStage( config.stages.front() );
     }

@@ -48,71 +48,46 @@ inline physics::WaterParams waterParams( const WaterConfig& config )
 template <class ExecSpace>
 void initialiseParticles( const CaseConfig& config, const InitialPoints& points,
                           ParticleViews<ExecSpace>& pv,
-                          WaterParticleViews<ExecSpace>& wv,
-                          const physics::WaterParams& water )
+                          WaterParticleViews<ExecSpace>& wv )
 {
+    using Host = Kokkos::DefaultHostExecutionSpace;
     const physics::MaterialTable table = makeMaterialTable( config.materials );
     const bool two_phase = config.analysis != AnalysisType::Dry;
-    auto x_h = Kokkos::create_mirror_view( pv.x_p );
-    auto m_h = Kokkos::create_mirror_view( pv.m_p );
-    auto vol_h = Kokkos::create_mirror_view( pv.vol_p );
-    auto material_h = Kokkos::create_mirror_view( pv.material_p );
-    auto id_h = Kokkos::create_mirror_view( pv.id_p );
-    auto status_h = Kokkos::create_mirror_view( pv.status_p );
+    ParticleViews<Host> host( points.size() );
+    WaterParticleViews<Host> water_host( two_phase ? points.size() : 0 );
+    Kokkos::deep_copy( water_host.p_w_condition_p, -1 );
+    Kokkos::deep_copy( water_host.inflow_p, -1 );
+    Kokkos::deep_copy( water_host.inflow_weight_p, 1.0 );
     for ( int p = 0; p < points.size(); ++p )
     {
         const MaterialConfig& material = config.materials[points.material[p]];
-        x_h( p, 0 ) = points.x[2 * p];
-        x_h( p, 1 ) = points.x[2 * p + 1];
-        vol_h( p ) = points.vol[p];
-        material_h( p ) = points.material[p];
-        m_h( p ) = two_phase
-                       ? ( 1.0 - material.porosity ) *
-                             material.solid_density_kg_per_m3 * points.vol[p]
-                       : material.density_kg_per_m3 * points.vol[p];
-        id_h( p ) = p;
-        status_h( p ) = point_active;
-    }
-    Kokkos::deep_copy( pv.x_p, x_h );
-    Kokkos::deep_copy( pv.x0_p, x_h );
-    Kokkos::deep_copy( pv.m_p, m_h );
-    Kokkos::deep_copy( pv.vol_p, vol_h );
-    Kokkos::deep_copy( pv.vol0_p, vol_h );
-    Kokkos::deep_copy( pv.material_p, material_h );
-    Kokkos::deep_copy( pv.id_p, id_h );
-    Kokkos::deep_copy( pv.status_p, status_h );
-    if ( !two_phase )
-        return;
-
-    auto p_w_h = Kokkos::create_mirror_view( wv.p_w_p );
-    auto S_h = Kokkos::create_mirror_view( wv.S_p );
-    auto dS_h = Kokkos::create_mirror_view( wv.dS_dp_p );
-    auto k_rel_h = Kokkos::create_mirror_view( wv.k_rel_p );
-    auto n_h = Kokkos::create_mirror_view( wv.n_p );
-    for ( int p = 0; p < points.size(); ++p )
-    {
+        for ( int d = 0; d < 2; ++d )
+            host.x_p( p, d ) = host.x0_p( p, d ) = points.x[2 * p + d];
+        host.vol_p( p ) = host.vol0_p( p ) = points.vol[p];
+        host.material_p( p ) = points.material[p];
+        host.m_p( p ) = two_phase ? ( 1.0 - material.porosity ) *
+                                        material.solid_density_kg_per_m3 *
+                                        points.vol[p]
+                                  : material.density_kg_per_m3 * points.vol[p];
+        host.id_p( p ) = p;
+        host.status_p( p ) = point_active;
+        if ( !two_phase )
+            continue;
         const double p_w = initialPorePressure( config.bodies[points.body[p]],
                                                 points.x[2 * p + 1] );
-        const physics::MaterialParams& params = table[points.material[p]];
         physics::RetentionState state{ 1.0, 0.0, 1.0 };
         if ( config.analysis == AnalysisType::Unsaturated )
-            state = physics::Retention{}( params.retention, p_w );
-        p_w_h( p ) = p_w;
-        S_h( p ) = state.S;
-        dS_h( p ) = state.dS_dp;
-        k_rel_h( p ) = state.k_rel;
-        n_h( p ) = config.materials[points.material[p]].porosity;
+            state = physics::Retention{}( table[points.material[p]].retention,
+                                          p_w );
+        water_host.p_w_p( p ) = water_host.p_w_held_p( p ) = p_w;
+        water_host.S_p( p ) = state.S;
+        water_host.dS_dp_p( p ) = state.dS_dp;
+        water_host.k_rel_p( p ) = state.k_rel;
+        water_host.n_p( p ) = material.porosity;
     }
-    Kokkos::deep_copy( wv.p_w_p, p_w_h );
-    Kokkos::deep_copy( wv.p_w_held_p, p_w_h );
-    Kokkos::deep_copy( wv.S_p, S_h );
-    Kokkos::deep_copy( wv.dS_dp_p, dS_h );
-    Kokkos::deep_copy( wv.k_rel_p, k_rel_h );
-    Kokkos::deep_copy( wv.n_p, n_h );
-    Kokkos::deep_copy( wv.p_w_condition_p, -1 );
-    Kokkos::deep_copy( wv.inflow_p, -1 );
-    Kokkos::deep_copy( wv.inflow_weight_p, 1.0 );
-    (void)water;
+    copyViews( host, pv );
+    if ( two_phase )
+        copyViews( water_host, wv );
 }
 
 } // namespace mpm

@@ -192,7 +192,7 @@ struct Finished
 
 //---------------------------------------------------------------------------//
 // The checkpoint names every View of the point structs (a View added to
-// them must be added to forEachParticleView / forEachWaterParticleView).
+// them must be added to their struct's forEachViewOf).
 TYPED_TEST( Restart, checkpoint_lists_every_point_view )
 {
     const mpm::ParticleViews<TypeParam> pv( 1 );
@@ -200,15 +200,15 @@ TYPED_TEST( Restart, checkpoint_lists_every_point_view )
     std::size_t bytes = 0;
     const auto add = [&]( const char*, const auto& view )
     { bytes += sizeof( view ); };
-    mpm::forEachParticleView( pv, add );
+    mpm::forEachView( pv, add );
     EXPECT_EQ( bytes, sizeof( pv ) )
-        << "a View of ParticleViews is missing in forEachParticleView "
+        << "a View of ParticleViews is missing in ParticleViews::forEachViewOf "
            "(views/mpm_particle_views.hpp)";
     bytes = 0;
-    mpm::forEachWaterParticleView( wv, add );
+    mpm::forEachView( wv, add );
     EXPECT_EQ( bytes, sizeof( wv ) )
         << "a View of WaterParticleViews is missing in "
-           "forEachWaterParticleView (views/mpm_water_views.hpp)";
+           "WaterParticleViews::forEachViewOf (views/mpm_water_views.hpp)";
 }
 
 //---------------------------------------------------------------------------//
