@@ -55,6 +55,46 @@ inline std::vector<double> lastSnapshotField( const std::filesystem::path& h5,
     return data;
 }
 
+//! String attribute `name` of `object` in file `h5` ("" if unreadable).
+inline std::string readStringAttribute( const std::filesystem::path& h5,
+                                        const char* object, const char* name )
+{
+    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT );
+    const hid_t attribute =
+        H5Aopen_by_name( file, object, name, H5P_DEFAULT, H5P_DEFAULT );
+    const hid_t type = H5Aget_type( attribute );
+    std::string text( type < 0 ? 0 : H5Tget_size( type ), '\0' );
+    if ( type < 0 || H5Tis_variable_str( type ) != 0 ||
+         H5Aread( attribute, type, text.data() ) < 0 )
+        text.clear();
+    H5Tclose( type );
+    H5Aclose( attribute );
+    H5Fclose( file );
+    return text.substr( 0, text.find( '\0' ) );
+}
+
+//! Replaces attribute `name` of `object` in file `h5` by the string
+//! `text` (deleted and created again); false if that fails.
+inline bool writeStringAttribute( const std::filesystem::path& h5,
+                                  const char* object, const char* name,
+                                  const std::string& text )
+{
+    const hid_t file = H5Fopen( h5.c_str(), H5F_ACC_RDWR, H5P_DEFAULT );
+    const hid_t type = H5Tcopy( H5T_C_S1 );
+    H5Tset_size( type, text.size() + 1 );
+    H5Tset_cset( type, H5T_CSET_UTF8 );
+    const hid_t space = H5Screate( H5S_SCALAR );
+    bool ok = H5Adelete_by_name( file, object, name, H5P_DEFAULT ) >= 0;
+    const hid_t attribute =
+        H5Acreate_by_name( file, object, name, type, space, H5P_DEFAULT,
+                           H5P_DEFAULT, H5P_DEFAULT );
+    ok = ok && attribute >= 0 && H5Awrite( attribute, type, text.c_str() ) >= 0;
+    H5Aclose( attribute );
+    H5Sclose( space );
+    H5Tclose( type );
+    return H5Fclose( file ) >= 0 && ok;
+}
+
 } // namespace mpm_test
 
 #endif // MPM_TEST_HDF5_HPP

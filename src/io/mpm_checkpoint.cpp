@@ -26,12 +26,11 @@ namespace
 using Impl::AttributeDigest;
 using Impl::AttributeValue;
 using Impl::Hdf5Ops;
-using Impl::linkNames;
 using Impl::readLoop;
 using Impl::writeLoop;
 
 const char* const who = "mpm::Checkpoint";
-const char* const format_name = "rainslide-checkpoint-1";
+const char* const format_name = "rainslide-checkpoint-2";
 //! Root attribute holding the AttributeDigest of the state's attributes.
 const char* const digest_name = "attribute_digest";
 
@@ -132,13 +131,13 @@ std::vector<CheckpointArray> readArrays( const std::string& file,
     std::vector<CheckpointArray> arrays;
     const hid_t state = h5.open( H5Gopen2( root, "state", H5P_DEFAULT ),
                                  "H5Gopen2", H5Gclose, "/state" );
-    for ( const std::string& group_name : linkNames( h5, state, "/state" ) )
+    for ( const std::string& group_name : h5.linkNames( state, "/state" ) )
     {
         const std::string group_path = "/state/" + group_name;
         const hid_t group =
             h5.open( H5Gopen2( state, group_name.c_str(), H5P_DEFAULT ),
                      "H5Gopen2", H5Gclose, group_path );
-        for ( const std::string& name : linkNames( h5, group, group_path ) )
+        for ( const std::string& name : h5.linkNames( group, group_path ) )
         {
             const std::string path = group_path + "/" + name;
             CheckpointArray a;

@@ -41,7 +41,7 @@ struct CheckpointIdentity
   points), the point conditions chosen at the stage start, the stage-loop
   state, and where the outputs stood.
 
-  File layout (HDF5, format "rainslide-checkpoint-1"):
+  File layout (HDF5, format "rainslide-checkpoint-2"):
   \code
   /            attrs: format, rainslide_version, case_name, case_file,
                       case_hash (FNV-1a of the fingerprint, hex), analysis,
@@ -54,10 +54,14 @@ struct CheckpointIdentity
   /conditions  attrs: next_surface_update_s
   /conditions/load_counts, load_group_sizes, load_group_members (int32),
               inflow_volumes, inflow_lengths_m (float64)
-  /loop        attrs: every field of StageLoopState (visitStageLoopState),
-                      dotted names; integers and bools as int64
-  /loop/run.stages/NNNNNN  attrs: the finished stages (visitStageSummary)
+  /loop        attrs: json (string): the StageLoopState, finished stages
+                      included, as JSON text (src/io/mpm_stage_state_json.hpp:
+                      keys are the member names, non-finite doubles "nan",
+                      "inf", "-inf")
   \endcode
+  The root attribute attribute_digest is a checksum over every other
+  attribute (AttributeDigest). Format 1 kept the loop state as one
+  attribute per field; such a file is refused by its format.
 */
 struct Checkpoint
 {

@@ -8,26 +8,22 @@
 #include <hdf5.h>
 
 #include <string>
-#include <vector>
 
 namespace mpm
 {
 namespace Impl
 {
-//! Names of the links in group `loc` (at path `object`), in name order.
-std::vector<std::string> linkNames( const Hdf5Ops& h5, hid_t loc,
-                                    const std::string& object );
-
 /*!
   \brief Writes the stage-loop state as group /loop of `root` in `file`:
-  every field of visitStageLoopState as an attribute (the finished stages
-  one group each), each also taken into `digest`.
+  one string attribute "json", the state's JSON text (stageLoopStateJson,
+  src/io/mpm_stage_state_json.hpp), also taken into `digest`.
 */
 void writeLoop( const std::string& file, hid_t root, const StageLoopState& loop,
                 AttributeDigest& digest );
 
-//! Reads what writeLoop wrote into `loop`, each attribute into `digest`.
-//! \throw std::runtime_error if a field is missing or of the wrong type.
+//! Reads what writeLoop wrote into `loop`, the attribute into `digest`.
+//! \throw std::runtime_error if it is missing, not JSON, or a field is
+//! missing, unknown, of the wrong type or out of range.
 void readLoop( const std::string& file, hid_t root, StageLoopState& loop,
                AttributeDigest& digest );
 

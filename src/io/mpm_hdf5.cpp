@@ -213,5 +213,27 @@ void Hdf5Ops::readDataset( const hid_t loc, const std::string& path,
     h5.closeAll();
 }
 
+std::vector<std::string> Hdf5Ops::linkNames( const hid_t loc,
+                                             const std::string& object,
+                                             const bool creation_order ) const
+{
+    std::vector<std::string> names;
+    const H5L_iterate_t collect = []( hid_t, const char* name,
+                                      const H5L_info_t*, void* out ) -> herr_t
+    {
+        static_cast<std::vector<std::string>*>( out )->push_back( name );
+        return 0;
+    };
+    if ( creation_order && H5Literate( loc, H5_INDEX_CRT_ORDER, H5_ITER_INC,
+                                       nullptr, collect, &names ) >= 0 )
+        return names;
+    H5Eclear2( H5E_DEFAULT );
+    names.clear();
+    check(
+        H5Literate( loc, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names ),
+        "H5Literate", object );
+    return names;
+}
+
 } // namespace Impl
 } // namespace mpm

@@ -79,6 +79,11 @@ class Hdf5Ops
     void readDataset( hid_t loc, const std::string& path, hid_t mem_type,
                       void* data ) const;
 
+    //! Names of the links in group `loc` (at path `object`): in creation
+    //! order if `creation_order` and the group tracks it, else in name order.
+    std::vector<std::string> linkNames( hid_t loc, const std::string& object,
+                                        bool creation_order = false ) const;
+
     const std::string& file() const { return _file; }
 
   private:

@@ -36,29 +36,6 @@ std::vector<hsize_t> fieldDims( const hsize_t n, const int components )
     return { n, static_cast<hsize_t>( components ) };
 }
 
-// Names of the datasets of a snapshot group, in creation order when the
-// group tracks it (files of this writer), else in name order.
-std::vector<std::string> fieldNames( const Hdf5Ops& h5, const hid_t group,
-                                     const std::string& object )
-{
-    std::vector<std::string> names;
-    const H5L_iterate_t collect = []( hid_t, const char* name,
-                                      const H5L_info_t*, void* out ) -> herr_t
-    {
-        static_cast<std::vector<std::string>*>( out )->push_back( name );
-        return 0;
-    };
-    if ( H5Literate( group, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect,
-                     &names ) >= 0 )
-        return names;
-    H5Eclear2( H5E_DEFAULT );
-    names.clear();
-    h5.check( H5Literate( group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect,
-                          &names ),
-              "H5Literate", object );
-    return names;
-}
-
 //---------------------------------------------------------------------------//
 // Throws std::invalid_argument for bad names, missing data or missing "x".
 void checkFields( const int n_points, const std::vector<FieldRef>& fields,
@@ -234,7 +211,9 @@ void SnapshotWriter::copySnapshots( const std::string& source,
             integer( "step" ),
             integer( "n_points" ),
             {} };
-        for ( const std::string& name : fieldNames( h5, group, g ) )
+        // In creation order when the group tracks it (files of this
+        // writer), else in name order.
+        for ( const std::string& name : h5.linkNames( group, g, true ) )
         {
             const std::string path = g + "/" + name;
             const auto dims = h5.datasetDims( src, path );

@@ -34,14 +34,17 @@ struct RunSummary
   Adding a field (e.g. for a new stop criterion or output):
   1. add it here with its initial value (the value of a fresh run);
   2. if it is per stage, reset it in beginStage();
-  3. add one line for it to visitStageLoopState() below (or to
-     visitStageSummary() / visitRunSummary() for those structs). The
-     checkpoint file (src/io/mpm_checkpoint.cpp) writes and reads every
-     visited field by name; a field it does not visit is silently lost on
-     restart. Supported types: double, int, long, std::size_t, bool,
-     std::string, std::vector<StageSummary>.
+  3. add its name to the NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE line of its
+     struct in src/io/mpm_stage_state_json.hpp (StageLoopState, or
+     StageSummary / RunProgress / RunSummary / physics::WaterBalance for
+     theirs). The checkpoint file stores the loop state as that JSON; a
+     field not listed there is silently lost on restart. Supported types:
+     double, int, long, std::size_t, bool, std::string, std::vector and
+     structs with a JSON definition there.
   4. a checkpoint written before the field existed lacks it and is refused
-     ("missing loop field"): the file format has no defaults.
+     ("loop state field '...' is missing"): the file format has no
+     defaults. Raise the format version (format_name in
+     src/io/mpm_checkpoint.cpp) so such a file is refused up front.
   Derived values (the stage's settings, its snapshot schedule) are not
   state: runStages recomputes them from the case.
 */
@@ -87,98 +90,6 @@ struct StageLoopState
         next_snapshot_s = first_snapshot_s;
     }
 };
-
-//---------------------------------------------------------------------------//
-//! Calls f(name, field) for every field of a physics::WaterBalance.
-template <class Balance, class F>
-void visitWaterBalance( Balance& w, F&& f )
-{
-    f( "stored_start_m3_per_m", w.stored_start );
-    f( "stored_end_m3_per_m", w.stored_end );
-    f( "carried_off_start_m3_per_m", w.carried_off_start );
-    f( "carried_off_end_m3_per_m", w.carried_off_end );
-    f( "point_inflow_m3_per_m", w.point_inflow );
-    f( "runoff_m3_per_m", w.runoff );
-    f( "prescribed_pressure_m3_per_m", w.prescribed );
-    f( "flow_in_m3_per_m", w.flow_in );
-}
-
-//! Calls f(name, field) for every field of a StageSummary.
-template <class Summary, class F>
-void visitStageSummary( Summary& s, F&& f )
-{
-    f( "name", s.name );
-    f( "type", s.type );
-    f( "steps", s.steps );
-    f( "duration_s", s.duration_s );
-    f( "dt_min_s", s.dt_min_s );
-    f( "dt_max_s", s.dt_max_s );
-    f( "ke_ratio", s.ke_ratio );
-    f( "converged", s.converged );
-    f( "stop_reason", s.stop_reason );
-    f( "max_speed_m_per_s", s.max_speed_m_per_s );
-    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
-                       { f( "water." + name, value ); } );
-    f( "speed_percentile", s.speed_percentile );
-    f( "static_speed_m_per_s", s.static_speed_m_per_s );
-    f( "speed_at_percentile_m_per_s", s.speed_at_percentile_m_per_s );
-    f( "points_not_below_static_speed", s.points_not_below_static_speed );
-    f( "allowed_points_not_below", s.allowed_points_not_below );
-}
-
-//! Calls f(name, field) for every field of a RunProgress.
-template <class Progress, class F>
-void visitRunProgress( Progress& p, F&& f )
-{
-    f( "stage", p.stage );
-    f( "stage_index", p.stage_index );
-    f( "step", p.step );
-    f( "stage_step", p.stage_step );
-    f( "time_s", p.time_s );
-    f( "stage_time_s", p.stage_time_s );
-    f( "stage_duration_s", p.stage_duration_s );
-    f( "dt_s", p.dt_s );
-    f( "kinetic_energy_j", p.kinetic_energy_j );
-    f( "active_points", p.active_points );
-}
-
-//! Calls f(name, field) for every field of a RunSummary.
-template <class Summary, class F>
-void visitRunSummary( Summary& s, F&& f )
-{
-    f( "stages", s.stages );
-    f( "steps", s.steps );
-    f( "dt_min_s", s.dt_min_s );
-    f( "dt_max_s", s.dt_max_s );
-    f( "interrupted", s.interrupted );
-    visitWaterBalance( s.water, [&]( const std::string& name, auto& value )
-                       { f( "water." + name, value ); } );
-}
-
-/*!
-  \brief Calls f(name, field) for every field of the loop state, nested
-  structs with dotted names ("progress.step", "run.steps"). State may be
-  const (writing) or not (reading).
-*/
-template <class State, class F>
-void visitStageLoopState( State& s, F&& f )
-{
-    f( "stage", s.stage );
-    f( "stage_started", s.stage_started );
-    visitRunProgress( s.progress, [&]( const std::string& name, auto& value )
-                      { f( "progress." + name, value ); } );
-    visitStageSummary( s.stage_summary,
-                       [&]( const std::string& name, auto& value )
-                       { f( "stage_summary." + name, value ); } );
-    f( "ke_max", s.ke_max );
-    f( "below_since", s.below_since );
-    f( "has_moved", s.has_moved );
-    f( "static_since", s.static_since );
-    f( "next_snapshot_s", s.next_snapshot_s );
-    f( "next_checkpoint_s", s.next_checkpoint_s );
-    visitRunSummary( s.run, [&]( const std::string& name, auto& value )
-                     { f( "run." + name, value ); } );
-}
 
 } // namespace mpm
 

@@ -1,21 +1,22 @@
-// The checkpoint file: the loop state round-trips, a failed write keeps the
-// previous checkpoint, a checkpoint of a changed case file is refused.
+// The checkpoint file: the loop state round-trips, an old or damaged one is
+// refused, a failed write keeps the previous checkpoint, a checkpoint of a
+// changed case file is refused.
+#include <mpm_test_hdf5.hpp>
+#include <mpm_test_loop_state.hpp>
 #include <mpm_test_restart.hpp>
 
 #include <io/mpm_case_fingerprint.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_checkpoint.hpp>
-#include <records/mpm_stage_state.hpp>
+#include <io/mpm_stage_state_json.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
-#include <vector>
 
 namespace
 {
@@ -24,73 +25,11 @@ namespace fs = std::filesystem;
 using namespace mpm_test::restart;
 
 //---------------------------------------------------------------------------//
-//! Every field of a loop state as text (doubles in hex: exact).
-std::vector<std::string> loopFields( const mpm::StageLoopState& state )
-{
-    std::vector<std::string> out;
-    const auto text = [&]( const std::string& name, const auto& value )
-    {
-        using T = std::decay_t<decltype( value )>;
-        std::ostringstream line;
-        line << name << " = ";
-        if constexpr ( std::is_same_v<T, double> )
-            line << std::hexfloat << value;
-        else
-            line << value;
-        out.push_back( line.str() );
-    };
-    mpm::visitStageLoopState(
-        state,
-        [&]( const std::string& name, const auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<mpm::StageSummary>> )
-            {
-                for ( std::size_t k = 0; k < value.size(); ++k )
-                    mpm::visitStageSummary(
-                        value[k], [&]( const std::string& field, const auto& v )
-                        { text( name + std::to_string( k ) + field, v ); } );
-            }
-            else
-                text( name, value );
-        } );
-    return out;
-}
-
-// Every field of the loop state survives the file, with distinct values.
+// Every field of the loop state survives the file bit for bit (its JSON
+// text, exact, compared), with many finished stages too.
 TEST( RestartFile, loop_state_round_trips )
 {
-    mpm::StageLoopState state;
-    int k = 0;
-    const auto fill = [&]( auto& value )
-    {
-        using T = std::decay_t<decltype( value )>;
-        ++k;
-        if constexpr ( std::is_same_v<T, double> )
-            value = 1.0 / 3.0 + k;
-        else if constexpr ( std::is_same_v<T, std::string> )
-            value = "text " + std::to_string( k );
-        else if constexpr ( std::is_same_v<T, bool> )
-            value = k % 2 == 0;
-        else
-            value = static_cast<T>( 1000 + k );
-    };
-    mpm::visitStageLoopState(
-        state,
-        [&]( const std::string&, auto& value )
-        {
-            using T = std::decay_t<decltype( value )>;
-            if constexpr ( std::is_same_v<T, std::vector<mpm::StageSummary>> )
-            {
-                value.resize( 2 );
-                for ( auto& summary : value )
-                    mpm::visitStageSummary( summary,
-                                            [&]( const std::string&, auto& v )
-                                            { fill( v ); } );
-            }
-            else
-                fill( value );
-        } );
+    const mpm::StageLoopState state = mpm_test::filledLoopState();
     mpm::Checkpoint checkpoint;
     checkpoint.loop = state;
     checkpoint.identity.case_fingerprint = "a = 1\n";
@@ -100,12 +39,76 @@ TEST( RestartFile, loop_state_round_trips )
     const fs::path file = freshDir( "round_trip" ) / "checkpoint.h5";
     mpm::writeCheckpoint( file.string(), checkpoint );
     const mpm::Checkpoint read = mpm::readCheckpoint( file.string() );
-    EXPECT_EQ( loopFields( read.loop ), loopFields( state ) );
+    EXPECT_EQ( mpm::stageLoopStateJson( read.loop ),
+               mpm::stageLoopStateJson( state ) );
+    EXPECT_EQ( mpm_test::readStringAttribute( file, "/loop", "json" ),
+               mpm::stageLoopStateJson( state ) );
+    EXPECT_TRUE( std::isnan( read.loop.stage_summary.ke_ratio ) );
     EXPECT_EQ( read.load_groups, checkpoint.load_groups );
     EXPECT_EQ( read.load_counts, checkpoint.load_counts );
     EXPECT_EQ( read.identity.case_fingerprint, "a = 1\n" );
     EXPECT_EQ( read.snapshots.count, 7 );
     EXPECT_EQ( read.snapshots.last_step, 123 );
+
+    // 2000 finished stages: an attribute far above HDF5's 64 KiB compact
+    // limit.
+    checkpoint.loop.run.stages.assign( 2000, state.run.stages[0] );
+    mpm::writeCheckpoint( file.string(), checkpoint );
+    EXPECT_GT( mpm::stageLoopStateJson( checkpoint.loop ).size(), 500000u );
+    EXPECT_EQ(
+        mpm::stageLoopStateJson( mpm::readCheckpoint( file.string() ).loop ),
+        mpm::stageLoopStateJson( checkpoint.loop ) );
+}
+
+// A checkpoint of format 1 (the loop state as one attribute per field) is
+// refused by its format; a changed loop state by the checksum, one that
+// is not JSON naming the file.
+TEST( RestartFile, old_format_or_bad_loop_state_is_refused )
+{
+    const fs::path dir = freshDir( "old_format" );
+    const fs::path file = dir / "checkpoint.h5";
+    mpm::Checkpoint checkpoint;
+    checkpoint.loop = mpm_test::filledLoopState();
+    mpm::writeCheckpoint( file.string(), checkpoint );
+    const std::string text =
+        mpm_test::readStringAttribute( file, "/loop", "json" );
+    ASSERT_FALSE( text.empty() );
+    // Expects reading a copy of the file with attribute `name` of `object`
+    // set to `value` to fail with a message holding `what` and its name.
+    const auto expectRefused = [&]( const char* object, const char* name,
+                                    const std::string& value,
+                                    const std::string& what )
+    {
+        const fs::path damaged = dir / "damaged.h5";
+        fs::copy_file( file, damaged, fs::copy_options::overwrite_existing );
+        ASSERT_TRUE(
+            mpm_test::writeStringAttribute( damaged, object, name, value ) );
+        try
+        {
+            mpm::readCheckpoint( damaged.string() );
+            ADD_FAILURE() << "accepted: " << name << " = " << value;
+        }
+        catch ( const std::runtime_error& e )
+        {
+            EXPECT_NE( std::string( e.what() ).find( what ), std::string::npos )
+                << e.what();
+            EXPECT_NE( std::string( e.what() ).find( damaged.string() ),
+                       std::string::npos )
+                << e.what();
+        }
+    };
+    expectRefused( "/", "format", "rainslide-checkpoint-1",
+                   "is not a rainslide checkpoint (rainslide-checkpoint-2)" );
+    std::string changed = text;
+    changed.replace( changed.find( "\"has_moved\":true" ), 16,
+                     "\"has_moved\":false" );
+    expectRefused( "/loop", "json", changed, "do not match their checksum" );
+    expectRefused( "/loop", "json", text.substr( 0, text.size() / 2 ),
+                   "the loop state is not valid JSON" );
+    changed = text;
+    changed.replace( changed.find( "\"stage\":2" ), 9, "\"stage\":\"2\"" );
+    expectRefused( "/loop", "json", changed,
+                   "loop state field 'stage' has the wrong type" );
 }
 
 //---------------------------------------------------------------------------//
