@@ -28,11 +28,11 @@ template <class ExecSpace>
 struct CellPointLists
 {
     using device_type = DeviceType<ExecSpace>;
-    Kokkos::View<int*, device_type> cell_p;     //!< cell of each point, -1 none
-    Kokkos::View<int*, device_type> offset_c;   //!< nx * ny + 1 offsets
-    Kokkos::View<int*, device_type> fill_c;     //!< fill cursor per cell
-    Kokkos::View<int*, device_type> points_c;   //!< point indices by cell
-    Kokkos::View<double*, device_type> level_c; //!< mean p_w, Pa
+    Kokkos::View<int*, device_type> cell_p;   //!< key (listCellPoints), -1 none
+    Kokkos::View<int*, device_type> offset_c; //!< nx * ny + 1 offsets
+    Kokkos::View<int*, device_type> fill_c;   //!< fill cursor per cell
+    Kokkos::View<int*, device_type> points_c; //!< point indices by cell
+    Kokkos::View<double*, device_type> level_c;      //!< mean p_w, Pa
     Kokkos::View<double* [2], device_type> centre_c; //!< mean x_p, m
     Kokkos::View<double* [2], device_type> slope_c;  //!< dp_w/dx, Pa/m
     Kokkos::View<double* [2], device_type> bound_c;  //!< p_w range, Pa
@@ -50,6 +50,7 @@ struct CellPointLists
         , bound_c( "bound_c", num_cells )
         , change_p( "water_change_p", num_points )
     {
+        Kokkos::deep_copy( cell_p, -2 ); // no key: the first call lists
     }
     bool allocated() const { return cell_p.extent( 0 ) > 0; }
 };
@@ -58,7 +59,11 @@ struct CellPointLists
 /*!
   \brief Lists the active points of each cell (count, scan, fill, then
   each cell's list sorted: the points with a free p_w first, each group in
-  index order, so that the result does not depend on the threads).
+  index order, so that the result does not depend on the threads). Each
+  point's key (2 x its cell + 1 if its p_w is prescribed; -1 outside the
+  grid or inactive) is kept in cell_p: when no key changed since the last
+  call (points rarely leave their cell in a step) the lists are already
+  right and are kept.
 */
 template <class ExecSpace>
 void listCellPoints( const ExecSpace& exec_space,
@@ -77,19 +82,30 @@ void listCellPoints( const ExecSpace& exec_space,
     const auto points_c = unmanaged( lists.points_c );
     const int ny = grid.ny;
 
+    int changed = 0;
+    Kokkos::parallel_reduce(
+        "mpm::cell_points_keys",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_points ),
+        KOKKOS_LAMBDA( const int p, int& count ) {
+            int ci, cj, key = -1;
+            if ( points.status_p( p ) == point_active &&
+                 grid.cellOf( points.x_p( p, 0 ), points.x_p( p, 1 ), ci, cj ) )
+                key = 2 * ( ci * ny + cj ) + ( condition_p( p ) >= 0 ? 1 : 0 );
+            if ( key != cell_p( p ) )
+                ++count;
+            cell_p( p ) = key;
+        },
+        changed );
+    if ( changed == 0 )
+        return;
+
     Kokkos::deep_copy( exec_space, lists.fill_c, 0 );
     Kokkos::parallel_for(
         "mpm::cell_points_count",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_points ),
         KOKKOS_LAMBDA( const int p ) {
-            int ci, cj;
-            cell_p( p ) = -1;
-            if ( points.status_p( p ) != point_active ||
-                 !grid.cellOf( points.x_p( p, 0 ), points.x_p( p, 1 ), ci,
-                               cj ) )
-                return;
-            cell_p( p ) = ci * ny + cj;
-            Kokkos::atomic_increment( &fill_c( ci * ny + cj ) );
+            if ( cell_p( p ) >= 0 )
+                Kokkos::atomic_increment( &fill_c( cell_p( p ) / 2 ) );
         } );
     Kokkos::parallel_scan(
         "mpm::cell_points_offsets",
@@ -109,9 +125,9 @@ void listCellPoints( const ExecSpace& exec_space,
         "mpm::cell_points_fill",
         Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_points ),
         KOKKOS_LAMBDA( const int p ) {
-            const int c = cell_p( p );
-            if ( c < 0 )
+            if ( cell_p( p ) < 0 )
                 return;
+            const int c = cell_p( p ) / 2;
             points_c( offset_c( c ) +
                       Kokkos::atomic_fetch_add( &fill_c( c ), 1 ) ) = p;
         } );
@@ -121,7 +137,7 @@ void listCellPoints( const ExecSpace& exec_space,
         KOKKOS_LAMBDA( const int c ) {
             // Insertion sort (a cell holds a few points).
             const auto key = [&]( const int p )
-            { return p + ( condition_p( p ) >= 0 ? num_points : 0 ); };
+            { return p + ( cell_p( p ) % 2 == 1 ? num_points : 0 ); };
             const int begin = offset_c( c );
             for ( int a = begin + 1; a < offset_c( c + 1 ); ++a )
             {

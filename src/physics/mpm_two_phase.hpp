@@ -282,7 +282,8 @@ porePressureIncrement( const RetentionFunction& retention, const double p_w,
 struct CellWaterEquilibrium
 {
     static constexpr int max_iterations = 60;
-    double bulk_modulus; //!< K_w, Pa
+    static constexpr int max_cached = 16; //!< points gathered once per solve
+    double bulk_modulus;                  //!< K_w, Pa
 
     //! What the solve needs of a point.
     struct Point
@@ -294,13 +295,21 @@ struct CellWaterEquilibrium
         const RetentionParams* retention;
     };
 
-    //! The level P of the `count` points point(0..count) (point i takes
+    //! The level P of the `count` points point_at(0..count) (point i takes
     //! P + d_i); `changed` is false if they already lie on the profile.
     template <class PointAt>
-    KOKKOS_INLINE_FUNCTION double solve( const int count, const PointAt& point,
-                                         bool& changed ) const
+    KOKKOS_INLINE_FUNCTION double
+    solve( const int count, const PointAt& point_at, bool& changed ) const
     {
         namespace KE = Kokkos::Experimental;
+        // The first points gathered once (a cell holds a few), the others
+        // at each use.
+        Point cached[max_cached];
+        const int num_cached = count < max_cached ? count : max_cached;
+        for ( int i = 0; i < num_cached; ++i )
+            cached[i] = point_at( i );
+        const auto point = [&]( const int i )
+        { return i < max_cached ? cached[i] : point_at( i ); };
         double lo = 1.0e300, hi = -1.0e300, weighted = 0.0, weight = 0.0;
         for ( int i = 0; i < count; ++i )
         {
