@@ -53,25 +53,6 @@ stoppedRun( const fs::path& dir,
     return file;
 }
 
-//! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
-void expectDamageRefused(
-    const std::string& name,
-    const std::function<void( mpm::Checkpoint& )>& damage,
-    const std::string& fragment,
-    const std::string& text = mpm_test::probedBlockCaseText( "0.2" ) )
-{
-    SCOPED_TRACE( name );
-    const fs::path dir =
-        fs::path( ::testing::TempDir() ) / ( "rainslide_damaged_" + name );
-    const fs::path file = stoppedRun( dir, text );
-    const std::string checkpoint = ( dir / "out" / "checkpoint.h5" ).string();
-    mpm::Checkpoint c = mpm::readCheckpoint( checkpoint );
-    damage( c );
-    mpm::writeCheckpoint( checkpoint, c );
-    mpm_test::expectExit( restartRun( file, checkpoint ), 2,
-                          "is damaged: " + fragment );
-}
-
 //! Flips the bits `mask` of the byte at `offset` of `file`.
 void flipByte( const fs::path& file, const std::uintmax_t offset,
                const int mask )
@@ -91,6 +72,25 @@ CommandResult restartRun( const fs::path& file, const fs::path& checkpoint,
 {
     return runCommand( "run " + file.string() + " --backend serial --quiet" +
                        extra + " --restart " + checkpoint.string() );
+}
+
+//! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
+void expectDamageRefused(
+    const std::string& name,
+    const std::function<void( mpm::Checkpoint& )>& damage,
+    const std::string& fragment,
+    const std::string& text = mpm_test::probedBlockCaseText( "0.2" ) )
+{
+    SCOPED_TRACE( name );
+    const fs::path dir =
+        fs::path( ::testing::TempDir() ) / ( "rainslide_damaged_" + name );
+    const fs::path file = stoppedRun( dir, text );
+    const std::string checkpoint = ( dir / "out" / "checkpoint.h5" ).string();
+    mpm::Checkpoint c = mpm::readCheckpoint( checkpoint );
+    damage( c );
+    mpm::writeCheckpoint( checkpoint, c );
+    mpm_test::expectExit( restartRun( file, checkpoint ), 2,
+                          "is damaged: " + fragment );
 }
 
 mpm::CheckpointArray& array( mpm::Checkpoint& c, const std::string& name )
