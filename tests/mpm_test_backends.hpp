@@ -28,6 +28,14 @@ struct BackendName
     }
 };
 
+//! Declares the empty fixture `Suite` of typed tests over the Backends.
+#define MPM_TEST_BACKEND_SUITE( Suite )                                        \
+    template <class ExecSpace>                                                 \
+    class Suite : public ::testing::Test                                       \
+    {                                                                          \
+    };                                                                         \
+    TYPED_TEST_SUITE( Suite, mpm_test::Backends, mpm_test::BackendName )
+
 //! Relative difference |a - b| / max(|a|, |b|, floor).
 inline double relativeDifference( const double a, const double b,
                                   const double floor = 1.0e-300 )

@@ -3,6 +3,8 @@
 
 #include <io/mpm_case_config.hpp>
 
+#include <string>
+
 namespace mpm_test
 {
 //! Linear elastic material.
@@ -16,6 +18,45 @@ inline mpm::MaterialConfig elasticMaterial( const double E, const double nu,
     m.youngs_modulus_pa = E;
     m.poisson_ratio = nu;
     return m;
+}
+
+//! A grid from the origin of `nx` x `ny` cells of `cell_size_m`.
+inline mpm::GridConfig gridConfig( const double cell_size_m, const int nx,
+                                   const int ny )
+{
+    mpm::GridConfig grid;
+    grid.origin_m = { 0.0, 0.0 };
+    grid.cell_size_m = cell_size_m;
+    grid.cells = { nx, ny };
+    return grid;
+}
+
+//! The boundary condition `condition` on the grid edge `where`.
+inline mpm::BoundaryConfig
+boundaryConfig( const mpm::BoundarySelector where,
+                const mpm::BoundaryCondition condition )
+{
+    mpm::BoundaryConfig boundary;
+    boundary.where = where;
+    boundary.condition = condition;
+    return boundary;
+}
+
+//! A stage `name` of `type`, `duration_s` long, under the gravity
+//! (0, `gravity_y`) m/s^2 with local `damping`.
+inline mpm::StageConfig stageConfig( const std::string& name,
+                                     const mpm::StageType type,
+                                     const double duration_s,
+                                     const double gravity_y,
+                                     const double damping = 0.0 )
+{
+    mpm::StageConfig stage;
+    stage.name = name;
+    stage.type = type;
+    stage.gravity_m_per_s2 = { 0.0, gravity_y };
+    stage.damping = damping;
+    stage.duration_s = duration_s;
+    return stage;
 }
 
 /*!
@@ -39,14 +80,12 @@ inline mpm::CaseConfig columnCase( const double height, const double h,
     body.polygon_m = {
         { 0.0, 0.0 }, { h, 0.0 }, { h, height }, { 0.0, height } };
     c.bodies = { body };
-    mpm::BoundaryConfig left, right, bottom;
-    left.where = mpm::BoundarySelector::Left;
-    left.condition = mpm::BoundaryCondition::FixX;
-    right.where = mpm::BoundarySelector::Right;
-    right.condition = mpm::BoundaryCondition::FixX;
-    bottom.where = mpm::BoundarySelector::Bottom;
-    bottom.condition = mpm::BoundaryCondition::Fixed;
-    c.boundaries = { left, right, bottom };
+    c.boundaries = { boundaryConfig( mpm::BoundarySelector::Left,
+                                     mpm::BoundaryCondition::FixX ),
+                     boundaryConfig( mpm::BoundarySelector::Right,
+                                     mpm::BoundaryCondition::FixX ),
+                     boundaryConfig( mpm::BoundarySelector::Bottom,
+                                     mpm::BoundaryCondition::Fixed ) };
     mpm::StageConfig s = stage;
     s.materials = c.materials;
     s.boundaries = c.boundaries;
@@ -87,6 +126,29 @@ inline mpm::MaterialConfig paperSoil()
         saturatedMaterial( 1.0e7, 0.33, 2700.0, 0.3, 4.5e-9 ) );
 }
 
+//! An unsaturated column (columnCase, 0.25 m cells) of the paper's soil and
+//! one dynamic stage "rain" of `duration_s` under the gravity (0,
+//! `gravity_y`) m/s^2.
+inline mpm::CaseConfig paperSoilColumn( const double height,
+                                        const double duration_s,
+                                        const double gravity_y )
+{
+    auto config = columnCase(
+        height, 0.25, paperSoil(),
+        stageConfig( "rain", mpm::StageType::Dynamic, duration_s, gravity_y ) );
+    config.analysis = mpm::AnalysisType::Unsaturated;
+    return config;
+}
+
+//! An inflow of `flux_m_per_s` on the points of the surface cells.
+inline mpm::WaterInflow surfaceCellsInflow( const double flux_m_per_s )
+{
+    mpm::WaterInflow inflow;
+    inflow.points.kind = mpm::PointSelection::Kind::SurfaceCells;
+    inflow.flux_m_per_s = flux_m_per_s;
+    return inflow;
+}
+
 /*!
   \brief Terzaghi consolidation column (verification.md 2.2): height H on a
   fixed impermeable base, rollers on the sides, drained top surface, no
@@ -96,11 +158,8 @@ inline mpm::CaseConfig terzaghiCase( const int cells, const double K_w,
                                      const double t_end, const double t_ramp )
 {
     const double H = 1.0, h = H / cells;
-    mpm::StageConfig stage;
-    stage.name = "consolidation";
-    stage.type = mpm::StageType::Dynamic;
-    stage.gravity_m_per_s2 = { 0.0, 0.0 };
-    stage.duration_s = t_end;
+    mpm::StageConfig stage = mpm_test::stageConfig(
+        "consolidation", mpm::StageType::Dynamic, t_end, 0.0 );
     // E = 10 MPa, nu = 0, n = 0.3, rho_s = 2650, K = 1e-3 m/s.
     const double k = 1.0e-3 * 1.0e-3 / ( 1000.0 * 9.81 );
     auto c = columnCase( H, h, saturatedMaterial( 1.0e7, 0.0, 2650.0, 0.3, k ),

@@ -4,6 +4,8 @@
 // Helpers of the tests that run the rainslide binary (RAINSLIDE_BINARY).
 #include <sys/wait.h>
 
+#include <mpm_test_toml.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -42,6 +44,25 @@ inline CommandResult runLogged( const std::string& args,
                                    log_name );
 }
 
+//! runLogged with the log rainslide_<suite>.log of the running test's suite.
+inline CommandResult runCommand( const std::string& args )
+{
+    const ::testing::TestInfo* test =
+        ::testing::UnitTest::GetInstance()->current_test_info();
+    return runLogged( args, std::string( "rainslide_" ) +
+                                test->test_suite_name() + ".log" );
+}
+
+//! The arguments of `run` of `file` into `out` on the Serial backend,
+//! followed by `extra`.
+inline std::string runArgs( const std::filesystem::path& file,
+                            const std::filesystem::path& out,
+                            const std::string& extra = "" )
+{
+    return "run " + file.string() + " --out " + out.string() +
+           " --backend serial" + extra;
+}
+
 //! An empty folder rainslide_<name> in the test temporary folder.
 inline std::filesystem::path freshTempDir( const std::string& name )
 {
@@ -69,27 +90,11 @@ inline std::filesystem::path writeCase( const std::filesystem::path& dir,
 inline std::string blockCaseText( const std::string& solver_extra,
                                   const std::string& stages )
 {
-    return R"(
-[case]
-name = "block"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.25
-cells = [8, 12]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e6
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[solver]
-)" + solver_extra +
+    return "\n" + caseToml( "block" ) + gridToml( "0.25", "[8, 12]" ) +
+           dryMaterialToml( "soil", "linear_elastic", "2000.0", "1.0e6",
+                            "0.3" ) +
+           soilBodyToml( "[[0.5, 0.0], [1.5, 0.0], [1.5, 2.0], [0.5, 2.0]]" ) +
+           boundaryToml( "bottom", "fixed" ) + "[solver]\n" + solver_extra +
            "\n" + stages;
 }
 
@@ -97,17 +102,16 @@ condition = "fixed"
 //! 0.02 s) and a probe near its top sampled every 0.01 s.
 inline std::string probedBlockCaseText( const std::string& duration_s )
 {
-    return blockCaseText( "", R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = )" + duration_s + R"(
-snapshot_interval_s = 0.02
-[probes]
-interval_s = 0.01
-points = [ { name = "top", position_m = [1.0, 1.9] } ]
-)" );
+    return blockCaseText( "", "\n" +
+                                  stageToml( "load", "dynamic", duration_s ) +
+                                  "snapshot_interval_s = 0.02\n[probes]\n"
+                                  "interval_s = 0.01\npoints = [ { name = "
+                                  "\"top\", position_m = [1.0, 1.9] } ]\n" );
 }
+
+//! The 0.5 m x 2 m column of saturatedColumnCaseText as polygon_m text.
+inline const char* const column_polygon =
+    "[[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]";
 
 /*!
   \brief A saturated elastic column 0.5 m x 2 m on a fixed base (cells of
@@ -117,30 +121,20 @@ points = [ { name = "top", position_m = [1.0, 1.9] } ]
 inline std::string saturatedColumnCaseText( const std::string& name,
                                             const std::string& stages )
 {
-    return R"(
-[case]
-name = ")" +
-           name + R"("
-analysis = "saturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [1, 5]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2650.0
-porosity = 0.3
-permeability_m2 = 1.0e-12
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-)" + stages;
+    return "\n" + caseToml( name, "saturated" ) + gridToml( "0.5", "[1, 5]" ) +
+           twoPhaseSoilToml( "2650.0", "1.0e-12", "1.0e7", "0.3" ) +
+           soilBodyToml( column_polygon ) + boundaryToml( "bottom", "fixed" ) +
+           stages;
+}
+
+//! Expects `result` to have exited with `exit_code` and its output to
+//! contain `fragment`.
+inline void expectExit( const CommandResult& result, const int exit_code,
+                        const std::string& fragment )
+{
+    EXPECT_EQ( result.exit_code, exit_code ) << result.output;
+    EXPECT_NE( result.output.find( fragment ), std::string::npos )
+        << result.output;
 }
 
 } // namespace mpm_test

@@ -52,10 +52,11 @@ gaussPoints( const mpm::physics::GridGeometry& grid, const int ci0,
                     m_h( p ) = rho * vol_h( p );
                     id_h( p ) = p;
                 }
-    Kokkos::deep_copy( pv.x_p, x_h );
-    Kokkos::deep_copy( pv.x0_p, x_h );
-    Kokkos::deep_copy( pv.vol_p, vol_h );
-    Kokkos::deep_copy( pv.vol0_p, vol_h );
+    // The current and the reference positions and volumes start equal.
+    for ( const auto& view : { pv.x_p, pv.x0_p } )
+        Kokkos::deep_copy( view, x_h );
+    for ( const auto& view : { pv.vol_p, pv.vol0_p } )
+        Kokkos::deep_copy( view, vol_h );
     Kokkos::deep_copy( pv.m_p, m_h );
     Kokkos::deep_copy( pv.id_p, id_h );
     Kokkos::deep_copy( pv.status_p, mpm::point_active );

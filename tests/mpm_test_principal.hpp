@@ -2,6 +2,7 @@
 #define MPM_TEST_PRINCIPAL_HPP
 
 #include <physics/mpm_material_params.hpp>
+#include <physics/mpm_mohr_coulomb.hpp>
 
 #include <algorithm>
 #include <array>
@@ -84,6 +85,36 @@ inline double tensileRef( const MaterialParams& m, const double eps )
 {
     return m.tensile_strength * cohesionRef( m, eps ) / m.cohesion_peak;
 }
+
+//! Solves the upper triangular n x n system of the rows a[k] = (A_k | b_k)
+//! (after a forward elimination) for g.
+inline void backSubstitute( const double a[3][4], const int n, double g[3] )
+{
+    for ( int k = n - 1; k >= 0; --k )
+    {
+        g[k] = a[k][3];
+        for ( int l = k + 1; l < n; ++l )
+            g[k] -= a[k][l] * g[l];
+        g[k] /= a[k][k];
+    }
+}
+
+//! The names the return-mapping tests use
+//! (`using namespace mpm_test::return_mapping;`).
+namespace return_mapping
+{
+using mpm::physics::cohesion;
+using mpm::physics::MaterialParams;
+using mpm::physics::MohrCoulomb;
+using mpm::physics::ReturnRegion;
+using mpm_test::backSubstitute;
+using mpm_test::cohesionRef;
+using mpm_test::plasticStrain;
+using mpm_test::principal;
+using mpm_test::shearInvariant;
+using mpm_test::tensileRef;
+using mpm_test::tensionTestParams;
+} // namespace return_mapping
 
 } // namespace mpm_test
 

@@ -59,19 +59,14 @@ inline fs::path freshDir( const std::string& name )
 inline std::string blockCase( const std::string& solver_extra,
                               const double duration_s = 0.2 )
 {
-    return mpm_test::blockCaseText( solver_extra, R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = )" + std::to_string( duration_s ) +
-                                                      R"(
-snapshot_interval_s = 0.05
-[[stages]]
-name = "more"
-type = "dynamic"
-duration_s = 0.1
-snapshot_interval_s = 0.05
-)" );
+    const std::string snapshots = "snapshot_interval_s = 0.05\n";
+    return mpm_test::blockCaseText(
+        solver_extra, "\n" +
+                          mpm_test::stageToml( "load", "dynamic",
+                                               std::to_string( duration_s ) ) +
+                          snapshots +
+                          mpm_test::stageToml( "more", "dynamic", "0.1" ) +
+                          snapshots );
 }
 
 //---------------------------------------------------------------------------//

@@ -1,6 +1,8 @@
 #ifndef MPM_TEST_WATER_HPP
 #define MPM_TEST_WATER_HPP
 
+#include <mpm_test_toml.hpp>
+
 #include <records/mpm_run_records.hpp>
 
 #include <string>
@@ -23,21 +25,8 @@ inline double waterVolume( const mpm::HostSnapshot& snap )
 */
 inline std::string slopeSoilToml()
 {
-    return R"(
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.33
-[materials.retention]
-model = "van_genuchten"
-alpha_per_pa = 4.4e-4
-n = 3.04
-residual_saturation = 0.23
-)";
+    return "\n" + twoPhaseSoilToml( "2700.0", "4.5e-9", "1.0e7", "0.33" ) +
+           paperRetentionToml();
 }
 
 /*!
@@ -48,26 +37,10 @@ residual_saturation = 0.23
 */
 inline std::string gardnerSoilOnRollersToml()
 {
-    return R"(
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e8
-poisson_ratio = 0.0
-[materials.retention]
-model = "gardner"
-alpha_per_m = 4.0
-residual_saturation = 0.0
-[[boundaries]]
-where = "left"
-condition = "fix_x"
-[[boundaries]]
-where = "right"
-condition = "fix_x"
-)";
+    return "\n" + twoPhaseSoilToml( "2700.0", "4.5e-9", "1.0e8", "0.0" ) +
+           "[materials.retention]\nmodel = \"gardner\"\nalpha_per_m = 4.0\n"
+           "residual_saturation = 0.0\n" +
+           rollersToml();
 }
 
 } // namespace mpm_test

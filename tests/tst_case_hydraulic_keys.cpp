@@ -3,6 +3,7 @@
 // polyline (its length derived), and the warnings of the reader and of the
 // point check.
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_toml.hpp>
 #include <setup/mpm_point_check.hpp>
 
 #include <gtest/gtest.h>
@@ -16,55 +17,26 @@ namespace
 //! `stage` appended after the gravity stage's keys.
 std::string hydraulicCase( const std::string& body, const std::string& stage )
 {
-    return R"([case]
-name = "hydraulic"
-analysis = "saturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [20, 10]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 2700.0
-porosity = 0.3
-permeability_m2 = 4.5e-9
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.33
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 3.0], [0.0, 3.0]]
-)" + body + R"(
-[[boundaries]]
-where = "below_polyline"
-condition = "fixed"
-polyline_m = [[-1.0, 0.2], [10.0, 0.2]]
-[[stages]]
-name = "gravity"
-type = "quasi_static"
-duration_s = 1.0
-)" + stage;
+    using namespace mpm_test;
+    return caseToml( "hydraulic", "saturated" ) +
+           gridToml( "0.5", "[20, 10]" ) +
+           twoPhaseSoilToml( "2700.0", "4.5e-9", "1.0e7", "0.33" ) +
+           soilBodyToml( rectangleToml( "10.0", "3.0" ) ) + body + "\n" +
+           fixedBelowToml( "[[-1.0, 0.2], [10.0, 0.2]]" ) +
+           stageToml( "gravity", "quasi_static", "1.0" ) + stage;
 }
 
 const char* const profile_body =
     "initial_pore_pressure_profile = [[0.0, 19620.0], [2.0, 0.0], "
     "[3.0, -29430.0]]\n";
 
-const char* const hydraulic_stage = R"(
-[[stages.pore_pressures]]
-where = "all"
-hold = "initial"
-[[stages.inflows]]
-where = "polyline"
-polyline_m = [[0.0, 3.0], [4.0, 3.0], [8.0, 6.0]]
-flux_m_per_s = 1.0e-5
-[[stages.inflows]]
-where = "polyline"
-measured_on = "horizontal"
-polyline_m = [[0.0, 3.0], [4.0, 3.0], [8.0, 6.0], [12.0, 6.0]]
-flux_m_per_s = 2.0e-5
-ponding = false
-)";
+const std::string hydraulic_stage =
+    "\n[[stages.pore_pressures]]\nwhere = \"all\"\nhold = \"initial\"\n" +
+    mpm_test::polylineInflowToml( "[[0.0, 3.0], [4.0, 3.0], [8.0, 6.0]]",
+                                  "1.0e-5" ) +
+    "[[stages.inflows]]\nwhere = \"polyline\"\nmeasured_on = \"horizontal\"\n"
+    "polyline_m = [[0.0, 3.0], [4.0, 3.0], [8.0, 6.0], [12.0, 6.0]]\n"
+    "flux_m_per_s = 2.0e-5\nponding = false\n";
 
 //---------------------------------------------------------------------------//
 TEST( HydraulicKeys, profile_hold_and_polyline_inflow_are_read )
@@ -149,20 +121,11 @@ TEST( HydraulicKeys, fingerprint_covers_the_new_keys )
 // that pick some.
 TEST( HydraulicKeys, point_check_warns_of_empty_selections )
 {
-    const std::string stages = std::string( hydraulic_stage ) + R"(
-[[stages]]
-name = "rain"
-type = "dynamic"
-duration_s = 1.0
-[[stages.pore_pressures]]
-where = "box"
-box_m = [[0.0, 4.0], [10.0, 5.0]]
-pressure_pa = 0.0
-[[stages.inflows]]
-where = "polyline"
-polyline_m = [[0.0, 4.5], [10.0, 4.5]]
-flux_m_per_s = 1.0e-5
-)";
+    const std::string stages =
+        hydraulic_stage + "\n" +
+        mpm_test::stageToml( "rain", "dynamic", "1.0" ) +
+        mpm_test::heldBoxToml( "[[0.0, 4.0], [10.0, 5.0]]", "0.0" ) +
+        mpm_test::polylineInflowToml( "[[0.0, 4.5], [10.0, 4.5]]", "1.0e-5" );
     const mpm::CaseConfig c =
         mpm::parseCase( hydraulicCase( profile_body, stages ), "h.toml" );
     const mpm::PointFindings findings = mpm::checkPoints( c );

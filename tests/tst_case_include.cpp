@@ -1,6 +1,7 @@
 // Case files that include others (a shared geometry), [probes] and the
 // slope study's case files.
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_toml.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,52 +32,45 @@ void writeFile( const fs::path& path, const std::string& text )
     std::ofstream( path ) << text;
 }
 
-const char* geometry = R"(# a shared geometry
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [20, 10]
+//! A shared geometry: a 10 x 4 m Mohr-Coulomb block on 0.5 m cells, one
+//! dynamic stage.
+const std::string geometry =
+    "# a shared geometry\n" + mpm_test::gridToml( "0.5", "[20, 10]" ) + "\n" +
+    mpm_test::soilBodyToml( mpm_test::rectangleToml( "10.0", "4.0" ) ) + "\n" +
+    mpm_test::dryMaterialToml( "soil", "mohr_coulomb", "2000.0", "1.0e7",
+                               "0.3" ) +
+    "cohesion_peak_pa = 20.0e3\nfriction_angle_deg = 20.0\n\n" +
+    mpm_test::stageToml( "gravity", "dynamic", "1.0" );
 
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]
+//! A case `name` that includes the file `included`, then the keys `rest`.
+std::string includingCase( const std::string& included, const std::string& name,
+                           const std::string& rest = "" )
+{
+    return mpm_test::tomlString( "include", included ) +
+           mpm_test::caseToml( name ) + rest;
+}
 
-[[materials]]
-name = "soil"
-model = "mohr_coulomb"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-cohesion_peak_pa = 20.0e3
-friction_angle_deg = 20.0
-
-[[stages]]
-name = "gravity"
-type = "dynamic"
-duration_s = 1.0
-)";
+//! The case read from a fresh folder `folder` holding the shared geometry
+//! and the case `name` that includes it, with the keys `rest`.
+mpm::CaseConfig readWithGeometry( const std::string& folder,
+                                  const std::string& name,
+                                  const std::string& rest )
+{
+    const fs::path dir = freshDir( folder );
+    writeFile( dir / "geometry.toml", geometry );
+    writeFile( dir / "case.toml",
+               includingCase( "geometry.toml", name, rest ) );
+    return mpm::readCaseFile( ( dir / "case.toml" ).string() );
+}
 
 TEST( CaseInclude, merges_tables_and_arrays_of_tables_by_index )
 {
-    const fs::path dir = freshDir( "merge" );
-    writeFile( dir / "geometry.toml", geometry );
-    writeFile( dir / "case.toml", R"(include = "geometry.toml"
-[case]
-name = "merged"
-[grid]
-cell_size_m = 0.25
-cells = [40, 20]
-[[materials]]
-friction_angle_deg = 30.0
-[[materials]]
-name = "rock"
-model = "linear_elastic"
-density_kg_per_m3 = 2500.0
-youngs_modulus_pa = 1.0e9
-poisson_ratio = 0.25
-)" );
-    const mpm::CaseConfig config =
-        mpm::readCaseFile( ( dir / "case.toml" ).string() );
+    const mpm::CaseConfig config = readWithGeometry(
+        "merge", "merged",
+        "[grid]\ncell_size_m = 0.25\ncells = [40, 20]\n[[materials]]\n"
+        "friction_angle_deg = 30.0\n" +
+            mpm_test::dryMaterialToml( "rock", "linear_elastic", "2500.0",
+                                       "1.0e9", "0.25" ) );
     EXPECT_EQ( config.name, "merged" );
     // Scalars of the including file replace the included ones.
     EXPECT_DOUBLE_EQ( config.grid.cell_size_m, 0.25 );
@@ -98,8 +92,7 @@ TEST( CaseInclude, errors_name_the_file_that_set_the_key )
     bad_geometry.replace( bad_geometry.find( "cell_size_m = 0.5" ), 17,
                           "cell_size_m = -1.0" );
     writeFile( dir / "geometry.toml", bad_geometry );
-    writeFile( dir / "case.toml",
-               "include = \"geometry.toml\"\n[case]\nname = \"x\"\n" );
+    writeFile( dir / "case.toml", includingCase( "geometry.toml", "x" ) );
     try
     {
         mpm::readCaseFile( ( dir / "case.toml" ).string() );
@@ -120,9 +113,9 @@ TEST( CaseInclude, nested_includes_resolve_relative_to_each_file )
     fs::create_directories( dir / "shared" );
     writeFile( dir / "shared" / "geometry.toml", geometry );
     writeFile( dir / "shared" / "base.toml",
-               "include = \"geometry.toml\"\n[case]\nname = \"base\"\n" );
-    writeFile( dir / "variant.toml", "include = \"shared/base.toml\"\n"
-                                     "[case]\nname = \"variant\"\n" );
+               includingCase( "geometry.toml", "base" ) );
+    writeFile( dir / "variant.toml",
+               includingCase( "shared/base.toml", "variant" ) );
     const mpm::CaseConfig config =
         mpm::readCaseFile( ( dir / "variant.toml" ).string() );
     EXPECT_EQ( config.name, "variant" );
@@ -131,18 +124,11 @@ TEST( CaseInclude, nested_includes_resolve_relative_to_each_file )
 
 TEST( CaseInclude, probes_are_read )
 {
-    const fs::path dir = freshDir( "probes" );
-    writeFile( dir / "geometry.toml", geometry );
-    writeFile( dir / "case.toml", R"(include = "geometry.toml"
-[case]
-name = "probes"
-[probes]
-interval_s = 0.05
-points = [ { name = "A", position_m = [1.0, 3.5] },
-           { name = "B", position_m = [9.0, 3.5] } ]
-)" );
-    const mpm::CaseConfig config =
-        mpm::readCaseFile( ( dir / "case.toml" ).string() );
+    const mpm::CaseConfig config = readWithGeometry(
+        "probes", "probes",
+        "[probes]\ninterval_s = 0.05\npoints = [ { name = \"A\", position_m = "
+        "[1.0, 3.5] },\n           { name = \"B\", position_m = [9.0, 3.5] } "
+        "]\n" );
     EXPECT_DOUBLE_EQ( config.probes.interval_s, 0.05 );
     ASSERT_EQ( config.probes.points.size(), 2u );
     EXPECT_EQ( config.probes.points[1].name, "B" );

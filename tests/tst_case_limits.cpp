@@ -2,6 +2,7 @@
 // bounded memory, with a message naming the file, the key and the limit
 // (issue 12; each reproduced a crash or hang on 226a27a).
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_minimal_case.hpp>
 
 #include <gtest/gtest.h>
 
@@ -19,27 +20,9 @@ namespace
 {
 namespace fs = std::filesystem;
 
-const char* small_case = R"(
-[case]
-name = "small"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 1.0
-cells = [10, 10]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-density_kg_per_m3 = 2000.0
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]
-[[stages]]
-name = "settle"
-type = "quasi_static"
-duration_s = 2.0
-)";
+//! The minimal case's block, linear elastic.
+const std::string small_case =
+    mpm_test::dryBlockCase( "small", "linear_elastic", "" );
 
 //! The error text of `read` (fails the test if it accepts the case), and
 //! its time in seconds.

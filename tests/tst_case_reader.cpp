@@ -19,6 +19,45 @@ namespace
 {
 using mpm::Point2;
 
+//! Expects the elastic parameters of `m`: density (kg/m^3), E (Pa), nu.
+void expectElastic( const mpm::MaterialConfig& m, const double density,
+                    const double youngs_modulus, const double poisson_ratio )
+{
+    EXPECT_DOUBLE_EQ( m.density_kg_per_m3, density );
+    EXPECT_DOUBLE_EQ( m.youngs_modulus_pa, youngs_modulus );
+    EXPECT_DOUBLE_EQ( m.poisson_ratio, poisson_ratio );
+}
+
+//! Expects the Mohr-Coulomb strength of `m`: peak and residual cohesion
+//! (Pa), friction angle (degrees).
+void expectStrength( const mpm::MaterialConfig& m, const double peak,
+                     const double residual, const double friction_deg )
+{
+    EXPECT_DOUBLE_EQ( m.cohesion_peak_pa, peak );
+    EXPECT_DOUBLE_EQ( m.cohesion_residual_pa, residual );
+    EXPECT_DOUBLE_EQ( m.friction_angle_deg, friction_deg );
+}
+
+//! Expects the two-phase parameters of `m`: rho_s (kg/m^3), n, k (m^2).
+void expectPoreSpace( const mpm::MaterialConfig& m, const double solid_density,
+                      const double porosity, const double permeability )
+{
+    EXPECT_DOUBLE_EQ( m.solid_density_kg_per_m3, solid_density );
+    EXPECT_DOUBLE_EQ( m.porosity, porosity );
+    EXPECT_DOUBLE_EQ( m.permeability_m2, permeability );
+}
+
+//! Expects the retention law `r` to be `model` between the saturations
+//! `residual` and `saturated`.
+void expectSaturations( const mpm::RetentionConfig& r,
+                        const mpm::RetentionType model, const double residual,
+                        const double saturated )
+{
+    EXPECT_EQ( r.model, model );
+    EXPECT_DOUBLE_EQ( r.residual_saturation, residual );
+    EXPECT_DOUBLE_EQ( r.saturated_saturation, saturated );
+}
+
 //---------------------------------------------------------------------------//
 // Case reader: a valid case.
 //---------------------------------------------------------------------------//
@@ -40,13 +79,9 @@ TEST( CaseReader, reads_good_case )
     const mpm::MaterialConfig& soil = c.materials[0];
     EXPECT_EQ( soil.name, "soil" );
     EXPECT_EQ( soil.model, mpm::ModelType::MohrCoulomb );
-    EXPECT_DOUBLE_EQ( soil.density_kg_per_m3, 1900.0 );
-    EXPECT_DOUBLE_EQ( soil.youngs_modulus_pa, 1.0e7 );
-    EXPECT_DOUBLE_EQ( soil.poisson_ratio, 0.33 );
-    EXPECT_DOUBLE_EQ( soil.cohesion_peak_pa, 20.0e3 );
-    EXPECT_DOUBLE_EQ( soil.cohesion_residual_pa, 100.0 );
+    expectElastic( soil, 1900.0, 1.0e7, 0.33 );
+    expectStrength( soil, 20.0e3, 100.0, 20.0 );
     EXPECT_DOUBLE_EQ( soil.softening_modulus_pa, -250e3 );
-    EXPECT_DOUBLE_EQ( soil.friction_angle_deg, 20.0 );
     EXPECT_DOUBLE_EQ( soil.dilation_angle_deg, 0.1 );
     EXPECT_EQ( c.materials[1].model, mpm::ModelType::LinearElastic );
     EXPECT_DOUBLE_EQ( c.materials[1].density_kg_per_m3, 2500.0 );
@@ -99,9 +134,7 @@ TEST( CaseReader, reads_good_case )
     EXPECT_DOUBLE_EQ( failure.snapshot_interval_s, 0.5 );
     EXPECT_FALSE( failure.reset_displacement );
     EXPECT_EQ( failure.materials[0].model, mpm::ModelType::MohrCoulomb );
-    EXPECT_DOUBLE_EQ( failure.materials[0].cohesion_peak_pa, 15.0e3 );
-    EXPECT_DOUBLE_EQ( failure.materials[0].cohesion_residual_pa, 100.0 );
-    EXPECT_DOUBLE_EQ( failure.materials[0].friction_angle_deg, 20.0 );
+    expectStrength( failure.materials[0], 15.0e3, 100.0, 20.0 );
     ASSERT_EQ( failure.boundaries.size(), 1u );
     EXPECT_EQ( failure.boundaries[0].where, mpm::BoundarySelector::Bottom );
 }
@@ -128,30 +161,21 @@ TEST( CaseReader, reads_good_two_phase_case )
     EXPECT_EQ( sand.name, "sand" );
     EXPECT_EQ( sand.model, mpm::ModelType::MohrCoulomb );
     EXPECT_DOUBLE_EQ( sand.density_kg_per_m3, 0.0 );
-    EXPECT_DOUBLE_EQ( sand.solid_density_kg_per_m3, 2700.0 );
-    EXPECT_DOUBLE_EQ( sand.porosity, 0.3 );
-    EXPECT_DOUBLE_EQ( sand.permeability_m2, 4.5e-9 );
+    expectPoreSpace( sand, 2700.0, 0.3, 4.5e-9 );
     EXPECT_DOUBLE_EQ( sand.youngs_modulus_pa, 1.0e7 );
-    EXPECT_DOUBLE_EQ( sand.cohesion_peak_pa, 1.0e3 );
-    EXPECT_DOUBLE_EQ( sand.cohesion_residual_pa, 1.0e3 );
-    EXPECT_DOUBLE_EQ( sand.friction_angle_deg, 30.0 );
+    expectStrength( sand, 1.0e3, 1.0e3, 30.0 );
     const mpm::RetentionConfig& vg = sand.retention;
-    EXPECT_EQ( vg.model, mpm::RetentionType::VanGenuchten );
-    EXPECT_DOUBLE_EQ( vg.residual_saturation, 0.23 );
-    EXPECT_DOUBLE_EQ( vg.saturated_saturation, 1.0 );
+    expectSaturations( vg, mpm::RetentionType::VanGenuchten, 0.23, 1.0 );
     EXPECT_DOUBLE_EQ( vg.alpha_per_pa, 4.4e-4 );
     EXPECT_DOUBLE_EQ( vg.n, 3.04 );
     EXPECT_DOUBLE_EQ( vg.k_rel_min, 1.0e-4 );
 
     const mpm::MaterialConfig& clay = c.materials[1];
     EXPECT_EQ( clay.model, mpm::ModelType::LinearElastic );
-    EXPECT_DOUBLE_EQ( clay.solid_density_kg_per_m3, 2650.0 );
-    EXPECT_DOUBLE_EQ( clay.porosity, 0.45 );
-    EXPECT_DOUBLE_EQ( clay.permeability_m2, 1.0e-14 );
+    expectPoreSpace( clay, 2650.0, 0.45, 1.0e-14 );
     // Liakopoulos with every default (inline table).
-    EXPECT_EQ( clay.retention.model, mpm::RetentionType::Liakopoulos );
-    EXPECT_DOUBLE_EQ( clay.retention.residual_saturation, 0.0 );
-    EXPECT_DOUBLE_EQ( clay.retention.saturated_saturation, 1.0 );
+    expectSaturations( clay.retention, mpm::RetentionType::Liakopoulos, 0.0,
+                       1.0 );
     EXPECT_DOUBLE_EQ( clay.retention.k_rel_min, 0.0 );
 
     // Bodies: initial pore pressure p_w = a + b y, defaults 0.
@@ -310,9 +334,7 @@ TEST( CaseReader, saturated_case_has_no_retention_law )
     EXPECT_EQ( c.analysis, mpm::AnalysisType::Saturated );
     const mpm::MaterialConfig& m = c.materials[0];
     EXPECT_DOUBLE_EQ( m.density_kg_per_m3, 0.0 );
-    EXPECT_DOUBLE_EQ( m.solid_density_kg_per_m3, 2650.0 );
-    EXPECT_DOUBLE_EQ( m.porosity, 0.4 );
-    EXPECT_DOUBLE_EQ( m.permeability_m2, 1.0e-12 );
+    expectPoreSpace( m, 2650.0, 0.4, 1.0e-12 );
     EXPECT_EQ( m.retention.model, mpm::RetentionType::Saturated );
     EXPECT_EQ( c.stages[0].materials[0].retention.model,
                mpm::RetentionType::Saturated );
@@ -322,30 +344,31 @@ TEST( CaseReader, saturated_case_has_no_retention_law )
     EXPECT_DOUBLE_EQ( c.water.viscosity_pa_s, 1.0e-3 );
 }
 
+//! The retention law of the unsaturated two-phase case with `retention`,
+//! read as `file`.
+mpm::RetentionConfig retentionOf( const std::string& retention,
+                                  const std::string& file )
+{
+    return mpm::parseCase( twoPhaseCase( "unsaturated", retention ), file )
+        .materials[0]
+        .retention;
+}
+
 TEST( CaseReader, reads_gardner_and_linear_retention )
 {
-    const mpm::CaseConfig gardner = mpm::parseCase(
-        twoPhaseCase( "unsaturated",
-                      "retention = { model = \"gardner\", residual_saturation "
-                      "= 0.05, saturated_saturation = 0.98, alpha_per_m = 2.5, "
-                      "k_rel_min = 1e-6 }\n" ),
+    const mpm::RetentionConfig g = retentionOf(
+        "retention = { model = \"gardner\", residual_saturation = 0.05, "
+        "saturated_saturation = 0.98, alpha_per_m = 2.5, k_rel_min = 1e-6 }\n",
         "gardner.toml" );
-    const mpm::RetentionConfig& g = gardner.materials[0].retention;
-    EXPECT_EQ( g.model, mpm::RetentionType::Gardner );
-    EXPECT_DOUBLE_EQ( g.residual_saturation, 0.05 );
-    EXPECT_DOUBLE_EQ( g.saturated_saturation, 0.98 );
+    expectSaturations( g, mpm::RetentionType::Gardner, 0.05, 0.98 );
     EXPECT_DOUBLE_EQ( g.alpha_per_m, 2.5 );
     EXPECT_DOUBLE_EQ( g.k_rel_min, 1e-6 );
 
-    const mpm::CaseConfig linear = mpm::parseCase(
-        twoPhaseCase( "unsaturated",
-                      "[materials.retention]\nmodel = \"linear\"\n"
-                      "residual_saturation = 0\nsuction_range_pa = 2e4\n" ),
-        "linear.toml" );
-    const mpm::RetentionConfig& l = linear.materials[0].retention;
-    EXPECT_EQ( l.model, mpm::RetentionType::Linear );
-    EXPECT_DOUBLE_EQ( l.residual_saturation, 0.0 );
-    EXPECT_DOUBLE_EQ( l.saturated_saturation, 1.0 );
+    const mpm::RetentionConfig l =
+        retentionOf( "[materials.retention]\nmodel = \"linear\"\n"
+                     "residual_saturation = 0\nsuction_range_pa = 2e4\n",
+                     "linear.toml" );
+    expectSaturations( l, mpm::RetentionType::Linear, 0.0, 1.0 );
     EXPECT_DOUBLE_EQ( l.suction_range_pa, 2e4 );
 }
 

@@ -13,11 +13,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class GridScatterTest : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( GridScatterTest, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( GridScatterTest );
 
 //---------------------------------------------------------------------------//
 //! Scatters contribution c(p, f) = p + f of point p to entry p % 7 (fields

@@ -13,15 +13,8 @@
 
 namespace
 {
-using mpm::physics::cohesion;
-using mpm::physics::MaterialParams;
-using mpm::physics::MohrCoulomb;
-using mpm::physics::ReturnRegion;
+using namespace mpm_test::return_mapping;
 using mpm::physics::yieldFunction;
-using mpm_test::cohesionRef;
-using mpm_test::plasticStrain;
-using mpm_test::principal;
-using mpm_test::shearInvariant;
 
 const double pi = std::acos( -1.0 );
 
@@ -138,46 +131,52 @@ TEST( MohrCoulomb, main_plane_return_lies_on_surface )
     EXPECT_NEAR( cohesion( m, eps ), 10.0e3 - 250.0e3 * eps, 1e-8 );
 }
 
-// Right edge: sigma_2 = sigma_3, de_p = ga (1+sp, 0, -(1-sp)) + gb (1+sp,
-// -(1-sp), 0) with ga, gb >= 0.
-TEST( MohrCoulomb, right_edge_return_has_equal_minor_stresses )
+/*!
+  \brief The return of `s_tr` onto an edge: the right edge (sigma_2 =
+  sigma_3, de_p = ga (1+sp, 0, -(1-sp)) + gb (1+sp, -(1-sp), 0)) or the left
+  edge (sigma_1 = sigma_2, de_p = ga (1+sp, 0, -(1-sp)) + gb (0, 1+sp,
+  -(1-sp))), with ga, gb >= 0 (sigma_1 = xx, sigma_2 = zz, sigma_3 = yy).
+*/
+void expectEdgeReturn( const double* s_tr, const ReturnRegion region )
 {
     const auto m = testParams();
     const double sin_psi = std::sin( m.dilation_angle );
-    const double* s_tr = right_tr;
     double s[4], eps;
-    ASSERT_EQ( checkedReturn( m, s_tr, 0.002, s, eps ),
-               ReturnRegion::RightEdge );
-    EXPECT_NEAR( s[3], s[1], 1e-10 * std::fabs( s[1] ) );
-    EXPECT_GT( s[0], s[3] );
+    ASSERT_EQ( checkedReturn( m, s_tr, 0.002, s, eps ), region );
+    const bool right = region == ReturnRegion::RightEdge;
+    if ( right )
+    {
+        EXPECT_NEAR( s[3], s[1], 1e-10 * std::fabs( s[1] ) );
+        EXPECT_GT( s[0], s[3] );
+    }
+    else
+    {
+        EXPECT_NEAR( s[0], s[3], 1e-10 * std::fabs( s[0] ) );
+        EXPECT_GT( s[3], s[1] );
+    }
     const auto de_p = plasticStrain( m, s_tr, s );
-    const double gamma_a = -de_p[1] / ( 1.0 - sin_psi );
-    const double gamma_b = -de_p[3] / ( 1.0 - sin_psi );
+    // ga and gb from the components of one plane's flow each (yy or xx, and
+    // zz), then the component both flows share (xx or yy).
+    const double own = right ? -( 1.0 - sin_psi ) : 1.0 + sin_psi;
+    const double gamma_a = de_p[right ? 1 : 0] / own;
+    const double gamma_b = de_p[3] / own;
     EXPECT_GT( gamma_a, 0.0 );
     EXPECT_GT( gamma_b, 0.0 );
-    EXPECT_NEAR( de_p[0], ( gamma_a + gamma_b ) * ( 1.0 + sin_psi ),
-                 1e-10 * de_p[0] );
+    const int shared = right ? 0 : 1;
+    EXPECT_NEAR( de_p[shared],
+                 ( gamma_a + gamma_b ) *
+                     ( right ? 1.0 + sin_psi : -( 1.0 - sin_psi ) ),
+                 1e-10 * std::fabs( de_p[shared] ) );
 }
 
-// Left edge: sigma_1 = sigma_2, de_p = ga (1+sp, 0, -(1-sp)) + gb (0, 1+sp,
-// -(1-sp)) with ga, gb >= 0.
+TEST( MohrCoulomb, right_edge_return_has_equal_minor_stresses )
+{
+    expectEdgeReturn( right_tr, ReturnRegion::RightEdge );
+}
+
 TEST( MohrCoulomb, left_edge_return_has_equal_major_stresses )
 {
-    const auto m = testParams();
-    const double sin_psi = std::sin( m.dilation_angle );
-    const double* s_tr = left_tr;
-    double s[4], eps;
-    ASSERT_EQ( checkedReturn( m, s_tr, 0.002, s, eps ),
-               ReturnRegion::LeftEdge );
-    EXPECT_NEAR( s[0], s[3], 1e-10 * std::fabs( s[0] ) );
-    EXPECT_GT( s[3], s[1] );
-    const auto de_p = plasticStrain( m, s_tr, s );
-    const double gamma_a = de_p[0] / ( 1.0 + sin_psi );
-    const double gamma_b = de_p[3] / ( 1.0 + sin_psi );
-    EXPECT_GT( gamma_a, 0.0 );
-    EXPECT_GT( gamma_b, 0.0 );
-    EXPECT_NEAR( de_p[1], -( gamma_a + gamma_b ) * ( 1.0 - sin_psi ),
-                 1e-10 * std::fabs( de_p[1] ) );
+    expectEdgeReturn( left_tr, ReturnRegion::LeftEdge );
 }
 
 // Tensile trial beyond the apex: hydrostatic p = c(eps_p_bar) cot(phi) with

@@ -1,6 +1,7 @@
 // The cells an inflow polyline passes through and each cell's share of its
 // water (src/setup/mpm_polyline_cells.cpp), against lengths worked out by
 // hand; the piecewise-linear initial pore-pressure profile.
+#include <mpm_test_cases.hpp>
 #include <setup/mpm_conditions.hpp>
 #include <setup/mpm_polyline_cells.hpp>
 
@@ -14,14 +15,7 @@
 namespace
 {
 //! 8 x 6 cells of 0.25 m from the origin.
-mpm::GridConfig testGrid()
-{
-    mpm::GridConfig grid;
-    grid.origin_m = { 0.0, 0.0 };
-    grid.cell_size_m = 0.25;
-    grid.cells = { 8, 6 };
-    return grid;
-}
+mpm::GridConfig testGrid() { return mpm_test::gridConfig( 0.25, 8, 6 ); }
 
 int cell( const int i, const int j ) { return i * 6 + j; }
 

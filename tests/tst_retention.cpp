@@ -1,3 +1,4 @@
+#include <mpm_test_retention.hpp>
 #include <physics/mpm_retention.hpp>
 
 #include <gtest/gtest.h>
@@ -13,20 +14,12 @@ using mpm::physics::RetentionModel;
 using mpm::physics::RetentionParams;
 using mpm::physics::RetentionState;
 
-RetentionParams params( const RetentionModel model, const double s_res,
-                        const double s_sat )
-{
-    RetentionParams r;
-    r.model = model;
-    r.s_res = s_res;
-    r.s_sat = s_sat;
-    return r;
-}
+using mpm_test::retentionParams;
 
 // The paper's slope (Sec. 3): alpha = 0.44 1/kPa, n = 3.04, S_res = 0.23.
 RetentionParams slopeVanGenuchten()
 {
-    auto r = params( RetentionModel::VanGenuchten, 0.23, 1.0 );
+    auto r = retentionParams( RetentionModel::VanGenuchten, 0.23, 1.0 );
     r.alpha_per_pa = 4.4e-4;
     r.n_vg = 3.04;
     return r;
@@ -34,14 +27,14 @@ RetentionParams slopeVanGenuchten()
 
 RetentionParams liakopoulosParams( const double s_res, const double k_min )
 {
-    auto r = params( RetentionModel::Liakopoulos, s_res, 1.0 );
+    auto r = retentionParams( RetentionModel::Liakopoulos, s_res, 1.0 );
     r.k_rel_min = k_min;
     return r;
 }
 
 RetentionParams gardnerParams()
 {
-    auto r = params( RetentionModel::Gardner, 0.1, 0.9 );
+    auto r = retentionParams( RetentionModel::Gardner, 0.1, 0.9 );
     r.alpha_per_m = 0.5;
     r.rho_w_g = 9810.0;
     return r;
@@ -49,7 +42,7 @@ RetentionParams gardnerParams()
 
 RetentionParams linearParams()
 {
-    auto r = params( RetentionModel::Linear, 0.2, 1.0 );
+    auto r = retentionParams( RetentionModel::Linear, 0.2, 1.0 );
     r.suction_range_pa = 1.0e4;
     return r;
 }

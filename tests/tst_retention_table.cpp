@@ -1,6 +1,7 @@
 // The tabulated van Genuchten law (physics::RetentionTable) against the
 // exact one over the whole table, for the paper's soil and laws much
 // softer and much steeper than it.
+#include <mpm_test_retention.hpp>
 #include <physics/mpm_retention.hpp>
 #include <physics/mpm_retention_table.hpp>
 #include <setup/mpm_retention_tables.hpp>
@@ -21,15 +22,14 @@ using mpm::physics::RetentionParams;
 using mpm::physics::RetentionState;
 using mpm::physics::RetentionTable;
 
+//! The van Genuchten law of `alpha_per_pa`, `n` and `s_res` (S_sat = 1).
 RetentionParams vanGenuchten( const double alpha_per_pa, const double n,
                               const double s_res )
 {
-    RetentionParams r;
-    r.model = RetentionModel::VanGenuchten;
+    RetentionParams r =
+        mpm_test::retentionParams( RetentionModel::VanGenuchten, s_res, 1.0 );
     r.alpha_per_pa = alpha_per_pa;
     r.n_vg = n;
-    r.s_res = s_res;
-    r.s_sat = 1.0;
     return r;
 }
 

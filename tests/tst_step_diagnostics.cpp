@@ -16,11 +16,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class StepDiagnostics : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( StepDiagnostics, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( StepDiagnostics );
 
 //! An unsaturated elastic column at 20 kPa suction (van Genuchten) under
 //! sudden gravity, with B-bar if `bbar`.

@@ -20,16 +20,7 @@
 
 namespace
 {
-using mpm::physics::cohesion;
-using mpm::physics::MaterialParams;
-using mpm::physics::MohrCoulomb;
-using mpm::physics::ReturnRegion;
-using mpm_test::cohesionRef;
-using mpm_test::plasticStrain;
-using mpm_test::principal;
-using mpm_test::shearInvariant;
-using mpm_test::tensileRef;
-using mpm_test::tensionTestParams;
+using namespace mpm_test::return_mapping;
 
 const double pi = std::acos( -1.0 );
 const double inf = std::numeric_limits<double>::infinity();
@@ -125,13 +116,7 @@ std::array<double, 2> flowFit( const ReturnRegion r, const double sp,
                 a[l][j] -= f * a[k][j];
         }
     double g[3] = {};
-    for ( int k = n - 1; k >= 0; --k )
-    {
-        g[k] = a[k][3];
-        for ( int l = k + 1; l < n; ++l )
-            g[k] -= a[k][l] * g[l];
-        g[k] /= a[k][k];
-    }
+    backSubstitute( a, n, g );
     double g_min = inf, res2 = 0.0;
     for ( int k = 0; k < n; ++k )
         g_min = std::min( g_min, g[k] );

@@ -15,14 +15,7 @@
 
 namespace
 {
-using mpm::physics::MaterialParams;
-using mpm::physics::MohrCoulomb;
-using mpm::physics::ReturnRegion;
-using mpm_test::plasticStrain;
-using mpm_test::principal;
-using mpm_test::shearInvariant;
-using mpm_test::tensileRef;
-using mpm_test::tensionTestParams;
+using namespace mpm_test::return_mapping;
 using Vec = std::array<double, 3>;
 
 using mpm_test::num_regions;
@@ -115,13 +108,7 @@ Vec closestPoint( const MaterialParams& m, const Vec& p_tr, const double c,
         if ( singular )
             continue;
         double g[3] = {};
-        for ( int k = n - 1; k >= 0; --k )
-        {
-            g[k] = a[k][3];
-            for ( int l = k + 1; l < n; ++l )
-                g[k] -= a[k][l] * g[l];
-            g[k] /= a[k][k];
-        }
+        backSubstitute( a, n, g );
         Vec x = p_tr;
         for ( int k = 0; k < n; ++k )
         {
@@ -304,6 +291,28 @@ TEST( TensionCutoff, uniaxial_extension_stays_on_the_tension_plane )
     }
 }
 
+//! Applies the strain increment `de` 200 times to the stress `s` (and
+//! eps_p_bar `eps`), asserting that each plastic step returns onto `region`
+//! and then passes `check`; `plastic` counts the plastic steps.
+template <class Check>
+void runPlasticSteps( const MaterialParams& m, const double de[4], double s[4],
+                      double& eps, const ReturnRegion region,
+                      const Check& check, int& plastic )
+{
+    plastic = 0;
+    for ( int step = 0; step < 200; ++step )
+    {
+        const ReturnRegion returned = MohrCoulomb{}( m, de, s, eps );
+        if ( returned == ReturnRegion::Elastic )
+            continue;
+        ++plastic;
+        ASSERT_EQ( returned, region ) << step;
+        check();
+        if ( ::testing::Test::HasFatalFailure() )
+            return;
+    }
+}
+
 // Hydrostatic extension: the trial passes sigma_1 = sigma_2 = sigma_3 =
 // sigma_t0 and returns to that corner, with no deviatoric plastic strain
 // (eps_p_bar and hence sigma_t unchanged, even with softening).
@@ -313,18 +322,15 @@ TEST( TensionCutoff, hydrostatic_extension_reaches_the_tension_apex )
     const auto m = tensionTestParams( 10.0, sigma_t0 );
     const double de[4] = { 2.0e-5, 2.0e-5, 0.0, 2.0e-5 };
     double s[4] = { -10.0e3, -10.0e3, 0.0, -10.0e3 }, eps = 0.0;
-    int plastic = 0;
-    for ( int step = 0; step < 200; ++step )
+    const auto at_the_apex = [&]
     {
-        const ReturnRegion region = MohrCoulomb{}( m, de, s, eps );
-        if ( region == ReturnRegion::Elastic )
-            continue;
-        ++plastic;
-        ASSERT_EQ( region, ReturnRegion::TensionApex ) << step;
         for ( int i : { 0, 1, 3 } )
             ASSERT_NEAR( s[i], sigma_t0, 1e-12 * sigma_t0 );
         ASSERT_NEAR( eps, 0.0, 1e-15 );
-    }
+    };
+    int plastic = 0;
+    ASSERT_NO_FATAL_FAILURE( runPlasticSteps(
+        m, de, s, eps, ReturnRegion::TensionApex, at_the_apex, plastic ) );
     EXPECT_GT( plastic, 150 );
 }
 
@@ -338,19 +344,16 @@ TEST( TensionCutoff, biaxial_extension_reaches_the_tension_edge )
     const double lambda = m.bulk_modulus - 2.0 / 3.0 * m.shear_modulus;
     const double de[4] = { 1.0e-5, 1.0e-5, 0.0, 0.0 };
     double s[4] = { 0.0, 0.0, 0.0, 0.0 }, eps = 0.0;
-    int plastic = 0;
-    for ( int step = 0; step < 200; ++step )
+    const auto on_the_edge = [&]
     {
-        const ReturnRegion region = MohrCoulomb{}( m, de, s, eps );
-        if ( region == ReturnRegion::Elastic )
-            continue;
-        ++plastic;
-        ASSERT_EQ( region, ReturnRegion::TensionEdge ) << step;
         ASSERT_NEAR( s[0], sigma_t0, 1e-12 * sigma_t0 );
         ASSERT_NEAR( s[1], sigma_t0, 1e-12 * sigma_t0 );
         ASSERT_NEAR( s[3], lambda / ( lambda + m.shear_modulus ) * sigma_t0,
                      1e-12 * sigma_t0 );
-    }
+    };
+    int plastic = 0;
+    ASSERT_NO_FATAL_FAILURE( runPlasticSteps(
+        m, de, s, eps, ReturnRegion::TensionEdge, on_the_edge, plastic ) );
     EXPECT_GT( plastic, 150 );
     // Plastic strain (1, 1, 0) per unit: eps_p_bar = 2/3 of each component.
     EXPECT_GT( eps, 0.0 );

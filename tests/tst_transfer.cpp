@@ -14,11 +14,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class Transfer : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Transfer, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Transfer );
 
 // The dry step's phases as Simulation::advanceDry runs them
 // (mpm::DryStepPhases: the P2G scatter into sums kept between steps, the
@@ -77,12 +73,9 @@ typename ViewType::HostMirror hostCopy( const ViewType& view )
 template <class ExecSpace>
 std::array<double, 5> nodalTotals( const mpm::GridViews<ExecSpace>& gv )
 {
-    const auto m_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.m_i );
-    const auto p_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.p_i );
-    const auto f_i =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
+    const auto m_i = hostCopy( gv.m_i );
+    const auto p_i = hostCopy( gv.p_i );
+    const auto f_i = hostCopy( gv.f_i );
     std::array<double, 5> total{};
     for ( int i = 0; i <= gv.geometry.nx; ++i )
         for ( int j = 0; j <= gv.geometry.ny; ++j )
@@ -161,16 +154,11 @@ TYPED_TEST( Transfer, uniform_motion_is_kept_by_the_whole_step )
     step.gatherAndRemap( dt, 0.7 );
     const mpm::PointUpdateReport report = step.updatePoints( dt );
 
-    const auto x_new =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
-    const auto v_new =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.v_p );
-    const auto L =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.grad_v_p );
-    const auto sigma =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.sigma_p );
-    const auto m =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.m_p );
+    const auto x_new = hostCopy( pv.x_p );
+    const auto v_new = hostCopy( pv.v_p );
+    const auto L = hostCopy( pv.grad_v_p );
+    const auto sigma = hostCopy( pv.sigma_p );
+    const auto m = hostCopy( pv.m_p );
     double energy = 0.0;
     for ( int p = 0; p < pv.size(); ++p )
     {
@@ -220,14 +208,10 @@ TYPED_TEST( Transfer, g2p_of_linear_field_is_exact )
                            step.phases.momentum_sums );
     step.updatePoints( dt );
 
-    const auto x_new =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.x_p );
-    const auto v =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.v_p );
-    const auto du =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.du_p );
-    const auto L =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.grad_v_p );
+    const auto x_new = hostCopy( pv.x_p );
+    const auto v = hostCopy( pv.v_p );
+    const auto du = hostCopy( pv.du_p );
+    const auto L = hostCopy( pv.grad_v_p );
     for ( int p = 0; p < pv.size(); ++p )
         for ( int d = 0; d < 2; ++d )
         {
@@ -249,9 +233,9 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
     using exec_space = TypeParam;
     const auto grid = mpm_test::makeGrid( 6, 6, 0.25 );
     auto pv = mpm_test::gaussPoints<exec_space>( grid, 1, 5, 1, 5, 1800.0 );
+    const double B[2][2] = { { 1.0e-3, 4.0e-4 }, { -2.0e-4, -2.0e-3 } };
     DryStep<exec_space> step( pv, grid );
     auto& gv = step.gv;
-    const double B[2][2] = { { 1.0e-3, 4.0e-4 }, { -2.0e-4, -2.0e-3 } };
     auto v_h = Kokkos::create_mirror( gv.v_i );
     for ( int i = 0; i <= grid.nx; ++i )
         for ( int j = 0; j <= grid.ny; ++j )
@@ -274,8 +258,7 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
                                  K * tr + 2.0 * G * ( de[1] - tr / 3.0 ),
                                  2.0 * G * de[2],
                                  K * tr + 2.0 * G * ( -tr / 3.0 ) };
-    const auto s =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), pv.sigma_p );
+    const auto s = hostCopy( pv.sigma_p );
     const double scale = std::abs( expected[1] );
     for ( int p = 0; p < pv.size(); ++p )
         for ( int c = 0; c < 4; ++c )
@@ -287,8 +270,7 @@ TYPED_TEST( Transfer, uniform_strain_patch_test )
 
     // Uniform stress: interior nodes feel no internal force.
     step.scatterAndUpdateGrid( 0.0, 0.0 );
-    const auto f =
-        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), gv.f_i );
+    const auto f = hostCopy( gv.f_i );
     double boundary_force = 0.0;
     for ( int i = 1; i <= 5; ++i )
         for ( int j = 1; j <= 5; ++j )

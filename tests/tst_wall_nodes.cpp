@@ -1,5 +1,6 @@
 #include <io/mpm_case_reader.hpp>
 #include <mpm_device_type.hpp>
+#include <mpm_test_cases.hpp>
 #include <setup/mpm_conditions.hpp>
 #include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
@@ -21,14 +22,7 @@ namespace
 using Node = std::pair<int, int>;
 
 //! A grid of 4 x 3 cells of 1 m from the origin: nodes (0..4, 0..3).
-mpm::GridConfig smallGrid()
-{
-    mpm::GridConfig grid;
-    grid.origin_m = { 0.0, 0.0 };
-    grid.cell_size_m = 1.0;
-    grid.cells = { 4, 3 };
-    return grid;
-}
+mpm::GridConfig smallGrid() { return mpm_test::gridConfig( 1.0, 4, 3 ); }
 
 std::set<Node> selectedNodes( const mpm::GridConfig& grid,
                               const std::vector<mpm::Point2>& line )

@@ -7,11 +7,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class BackendAgreement : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( BackendAgreement, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( BackendAgreement );
 
 template <class ExecSpace>
 mpm::HostSnapshot runShortSlope( const mpm::CaseConfig& config )

@@ -16,11 +16,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class BaseCells : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( BaseCells, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( BaseCells );
 
 using namespace mpm_test::base_cells;
 

@@ -9,11 +9,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class BBar : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( BBar, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( BBar );
 
 /*!
   Point-level checkerboard of p_w: RMS over points of p_w minus the mean of
@@ -96,12 +92,8 @@ double checkerboard( const mpm::HostSnapshot& snap, const double h )
 */
 mpm::CaseConfig footingCase( const bool bbar, const bool cell_equilibrium )
 {
-    mpm::StageConfig stage;
-    stage.name = "footing";
-    stage.type = mpm::StageType::Dynamic;
-    stage.gravity_m_per_s2 = { 0.0, 0.0 };
-    stage.damping = 0.3;
-    stage.duration_s = 0.3;
+    mpm::StageConfig stage = mpm_test::stageConfig(
+        "footing", mpm::StageType::Dynamic, 0.3, 0.0, 0.3 );
     auto c = mpm_test::columnCase(
         1.0, 0.1,
         mpm_test::saturatedMaterial( 1.0e7, 0.3, 2650.0, 0.3, 1.0e-14 ),

@@ -17,26 +17,27 @@ namespace
 {
 namespace fs = std::filesystem;
 
-using mpm_test::CommandResult;
+using mpm_test::runCommand;
 using mpm_test::writeCase;
-
-CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runLogged( args, "rainslide_cli.log" );
-}
 
 //! The test block (mpm_test::blockCaseText) with one dynamic stage of 0.2 s;
 //! `stage_extra` is appended to the stage.
 std::string blockCase( const std::string& solver_extra,
                        const std::string& stage_extra )
 {
-    return mpm_test::blockCaseText( solver_extra, R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = 0.2
-snapshot_interval_s = 0.05
-)" + stage_extra );
+    return mpm_test::blockCaseText(
+        solver_extra, "\n" + mpm_test::stageToml( "load", "dynamic", "0.2" ) +
+                          "snapshot_interval_s = 0.05\n" + stage_extra );
+}
+
+//! `text` without its fixed bottom boundary.
+std::string withoutBottomBoundary( const std::string& text )
+{
+    return std::regex_replace(
+        text,
+        std::regex( "\\[\\[boundaries\\]\\]\nwhere = "
+                    "\"bottom\"\ncondition = \"fixed\"\n" ),
+        "" );
 }
 
 //---------------------------------------------------------------------------//
@@ -44,9 +45,7 @@ TEST( Cli, run_writes_hdf5_xdmf_and_metrics )
 {
     const fs::path dir = mpm_test::freshTempDir( "run" );
     const fs::path file = writeCase( dir, blockCase( "", "" ) );
-    const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial" );
+    const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     EXPECT_NE( result.output.find( "MP-updates/s" ), std::string::npos );
     EXPECT_EQ( mpm_test::snapshotCount( dir / "out" / "particles.h5" ), 4 );
@@ -67,10 +66,9 @@ TEST( Cli, set_overrides_keys_and_is_recorded )
 {
     const fs::path dir = mpm_test::freshTempDir( "set" );
     const fs::path file = writeCase( dir, blockCase( "", "" ) );
-    const auto result = runCommand(
-        "run " + file.string() + " --out " + ( dir / "out" ).string() +
-        " --backend serial --set stages[0].duration_s=0.1 --set "
-        "solver.courant_number=0.4" );
+    const auto result = runCommand( mpm_test::runArgs(
+        file, dir / "out",
+        " --set stages[0].duration_s=0.1 --set solver.courant_number=0.4" ) );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     EXPECT_EQ( mpm_test::snapshotCount( dir / "out" / "particles.h5" ), 2 );
     std::ifstream in( dir / "out" / "metrics.json" );
@@ -80,10 +78,7 @@ TEST( Cli, set_overrides_keys_and_is_recorded )
                                  "solver.courant_number=0.4" } ) );
     const auto bad = runCommand( "check " + file.string() +
                                  " --set solver.courant_number=7" );
-    EXPECT_EQ( bad.exit_code, 2 ) << bad.output;
-    EXPECT_NE( bad.output.find( "--set solver.courant_number=7:1:" ),
-               std::string::npos )
-        << bad.output;
+    mpm_test::expectExit( bad, 2, "--set solver.courant_number=7:1:" );
 }
 
 TEST( Cli, bad_case_is_rejected_and_nothing_is_written )
@@ -120,13 +115,8 @@ TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
 {
     const fs::path dir = mpm_test::freshTempDir( "dt" );
     const fs::path file = writeCase( dir, blockCase( "dt_s = 0.01", "" ) );
-    const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial" );
-    EXPECT_EQ( result.exit_code, 1 );
-    EXPECT_NE( result.output.find( "dt_s = 0.01 s exceeds the stable limit" ),
-               std::string::npos )
-        << result.output;
+    const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
+    mpm_test::expectExit( result, 1, "dt_s = 0.01 s exceeds the stable limit" );
     EXPECT_FALSE( fs::exists( dir / "out" ) );
 }
 
@@ -136,9 +126,7 @@ TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )
     // Any speed above 1e-6 x the wave speed counts as unstable here.
     const fs::path file =
         writeCase( dir, blockCase( "instability_speed_factor = 1.0e-6", "" ) );
-    const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial" );
+    const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
     EXPECT_EQ( result.exit_code, 1 );
     for ( const char* fragment : { "material point", "is unstable: speed",
                                    "position (", "at step", "CFL limit" } )
@@ -156,32 +144,18 @@ TEST( Cli, point_leaving_the_grid_is_an_error_or_removed )
     const fs::path dir = mpm_test::freshTempDir( "leave" );
     // Sideways gravity pushes the block out through the open right side.
     const std::string stage = "gravity_m_per_s2 = [400.0, 0.0]\n";
-    std::string text = blockCase( "", "" );
-    text =
-        std::regex_replace( text,
-                            std::regex( "\\[\\[boundaries\\]\\]\nwhere = "
-                                        "\"bottom\"\ncondition = \"fixed\"\n" ),
-                            "" );
-    const fs::path file = writeCase( dir, text + stage );
-    const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial" );
-    EXPECT_EQ( result.exit_code, 1 );
-    EXPECT_NE( result.output.find( "left the grid" ), std::string::npos )
-        << result.output;
+    const fs::path file =
+        writeCase( dir, withoutBottomBoundary( blockCase( "", "" ) ) + stage );
+    const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
+    mpm_test::expectExit( result, 1, "left the grid" );
 
     const fs::path file_remove = writeCase(
         dir, blockCase( "remove_points_leaving_grid = true", "" ) + stage );
-    std::string removing = blockCase( "remove_points_leaving_grid = true", "" );
-    removing =
-        std::regex_replace( removing,
-                            std::regex( "\\[\\[boundaries\\]\\]\nwhere = "
-                                        "\"bottom\"\ncondition = \"fixed\"\n" ),
-                            "" );
-    writeCase( dir, removing + stage );
+    writeCase( dir, withoutBottomBoundary(
+                        blockCase( "remove_points_leaving_grid = true", "" ) ) +
+                        stage );
     const auto removed =
-        runCommand( "run " + file_remove.string() + " --out " +
-                    ( dir / "out2" ).string() + " --backend serial" );
+        runCommand( mpm_test::runArgs( file_remove, dir / "out2" ) );
     EXPECT_EQ( removed.exit_code, 0 ) << removed.output;
     std::ifstream in( dir / "out2" / "metrics.json" );
     EXPECT_GT( nlohmann::json::parse( in )["removed_points"].get<int>(), 0 );
@@ -213,45 +187,18 @@ TEST( Cli, total_stress_slope_runs_to_completion )
 TEST( Cli, two_phase_run_reports_pore_pressure_extremes )
 {
     const fs::path dir = mpm_test::freshTempDir( "pore_pressure" );
-    const fs::path file = writeCase( dir, R"(
-[case]
-name = "hydrostatic_column"
-analysis = "saturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [1, 5]
-[[materials]]
-name = "soil"
-model = "linear_elastic"
-solid_density_kg_per_m3 = 1000.0
-porosity = 0.3
-permeability_m2 = 1.0e-10
-youngs_modulus_pa = 1.0e7
-poisson_ratio = 0.3
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 2.0], [0.0, 2.0]]
-initial_pore_pressure_pa = 19620.0
-initial_pore_pressure_gradient_pa_per_m = -9810.0
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[[boundaries]]
-where = "left"
-condition = "fix_x"
-[[boundaries]]
-where = "right"
-condition = "fix_x"
-[[stages]]
-name = "settle"
-type = "quasi_static"
-duration_s = 0.5
-snapshot_interval_s = 0.1
-)" );
-    const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial" );
+    using namespace mpm_test;
+    const fs::path file = writeCase(
+        dir, "\n" + caseToml( "hydrostatic_column", "saturated" ) +
+                 gridToml( "0.5", "[1, 5]" ) +
+                 twoPhaseSoilToml( "1000.0", "1.0e-10", "1.0e7", "0.3" ) +
+                 soilBodyToml( column_polygon ) +
+                 "initial_pore_pressure_pa = 19620.0\n"
+                 "initial_pore_pressure_gradient_pa_per_m = -9810.0\n" +
+                 boundaryToml( "bottom", "fixed" ) + rollersToml() +
+                 stageToml( "settle", "quasi_static", "0.5" ) +
+                 "snapshot_interval_s = 0.1\n" );
+    const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     std::ifstream in( dir / "out" / "metrics.json" );
     const auto metrics = nlohmann::json::parse( in );

@@ -15,13 +15,8 @@ namespace
 {
 namespace fs = std::filesystem;
 
-using mpm_test::CommandResult;
+using mpm_test::runCommand;
 using mpm_test::writeCase;
-
-CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runLogged( args, "rainslide_cli_safety.log" );
-}
 
 fs::path freshDir( const std::string& name )
 {
@@ -33,11 +28,10 @@ std::string blockCase( const std::string& solver_extra,
                        const std::string& stage_extra,
                        const std::string& duration = "0.2" )
 {
-    return mpm_test::blockCaseText( solver_extra, R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = )" + duration + "\n" + stage_extra );
+    return mpm_test::blockCaseText(
+        solver_extra, "\n" +
+                          mpm_test::stageToml( "load", "dynamic", duration ) +
+                          stage_extra );
 }
 
 std::string readText( const fs::path& path )
@@ -56,15 +50,10 @@ void expectRefused( const std::string& name, const std::string& text,
     const fs::path dir = freshDir( name );
     const fs::path file = writeCase( dir, text );
     const auto check = runCommand( "check " + file.string() );
-    EXPECT_EQ( check.exit_code, 2 ) << check.output;
-    EXPECT_NE( check.output.find( file.string() + ": error: " ),
-               std::string::npos )
-        << check.output;
-    EXPECT_NE( check.output.find( fragment ), std::string::npos )
-        << check.output;
+    mpm_test::expectExit( check, 2, file.string() + ": error: " );
+    mpm_test::expectExit( check, 2, fragment );
     const auto run =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial --quiet" );
+        runCommand( mpm_test::runArgs( file, dir / "out", " --quiet" ) );
     EXPECT_EQ( run.exit_code, 2 ) << run.output;
     EXPECT_FALSE( fs::exists( dir / "out" ) );
 }
@@ -72,12 +61,9 @@ void expectRefused( const std::string& name, const std::string& text,
 //---------------------------------------------------------------------------//
 TEST( CliSafety, check_refuses_a_device_as_case_file )
 {
-    const auto result = runCommand( "check /dev/zero" );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE( result.output.find( "/dev/zero: error: cannot open the case "
-                                   "file: expected a readable regular file" ),
-               std::string::npos )
-        << result.output;
+    mpm_test::expectExit( runCommand( "check /dev/zero" ), 2,
+                          "/dev/zero: error: cannot open the case file: "
+                          "expected a readable regular file" );
 }
 
 TEST( CliSafety, zero_or_tiny_time_step_cannot_finish )
@@ -109,25 +95,19 @@ TEST( CliSafety, long_run_and_snapshot_flood_exceed_the_budget )
     const fs::path file =
         writeCase( dir, blockCase( "", "snapshot_interval_s = 1e-5" ) );
     const auto refused = runCommand( "check " + file.string() );
-    EXPECT_EQ( refused.exit_code, 2 ) << refused.output;
-    EXPECT_NE( refused.output.find( "--max-snapshots N" ), std::string::npos )
-        << refused.output;
+    mpm_test::expectExit( refused, 2, "--max-snapshots N" );
     const auto accepted = runCommand( "check " + file.string() +
                                       " --max-snapshots 0 --max-output-gb 0" );
-    EXPECT_EQ( accepted.exit_code, 0 ) << accepted.output;
-    EXPECT_NE( accepted.output.find( "estimate: 128 points, 96 cells" ),
-               std::string::npos )
-        << accepted.output;
+    mpm_test::expectExit( accepted, 0, "estimate: 128 points, 96 cells" );
 }
 
 TEST( CliSafety, point_errors_surface_at_check )
 {
     // Once exit 1 at `run` only: a probe outside the soil, no point at all.
-    expectRefused( "probe", blockCase( "", "" ) + R"(
-[probes]
-interval_s = 0.05
-points = [ { name = "air", position_m = [1.0, 2.8] } ]
-)",
+    expectRefused( "probe",
+                   blockCase( "", "" ) +
+                       "\n[probes]\ninterval_s = 0.05\npoints = [ { name = "
+                       "\"air\", position_m = [1.0, 2.8] } ]\n",
                    "key 'probes.points[0].position_m': expected a point in "
                    "the soil" );
     std::string thin = blockCase( "", "" );
@@ -152,13 +132,10 @@ TEST( CliSafety, unsafe_output_folders_are_refused )
             ( dir / "a_file" ).string() } )
     {
         SCOPED_TRACE( out );
-        const auto result = runCommand( "run " + file.string() + " --out " +
-                                        out + " --backend serial --quiet" );
-        EXPECT_EQ( result.exit_code, 2 ) << result.output;
-        EXPECT_NE( result.output.find( "rainslide: error: --out '" + out +
-                                       "': expected a folder of its own" ),
-                   std::string::npos )
-            << result.output;
+        mpm_test::expectExit(
+            runCommand( mpm_test::runArgs( file, out, " --quiet" ) ), 2,
+            "rainslide: error: --out '" + out +
+                "': expected a folder of its own" );
     }
 }
 
@@ -176,8 +153,7 @@ TEST( CliSafety, planted_symlinks_are_not_followed )
         fs::create_symlink( dir / ( name + ".target" ), out / name );
     }
     const auto result =
-        runCommand( "run " + file.string() + " --out " + out.string() +
-                    " --backend serial --quiet" );
+        runCommand( mpm_test::runArgs( file, out, " --quiet" ) );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     for ( const std::string name :
           { "particles.h5.partial", "checkpoint.h5.partial" } )
@@ -196,8 +172,7 @@ TEST( CliSafety, old_metrics_do_not_survive_a_failed_run )
     std::ofstream( dir / "out" / "metrics.json" )
         << "{\"status\": \"completed\"}\n";
     const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial --quiet" );
+        runCommand( mpm_test::runArgs( file, dir / "out", " --quiet" ) );
     EXPECT_EQ( result.exit_code, 1 ) << result.output;
     EXPECT_FALSE( fs::exists( dir / "out" / "metrics.json" ) );
 }
@@ -206,18 +181,13 @@ TEST( CliSafety, unconverged_quasi_static_stage_is_not_completed )
 {
     // 0.02 s: far too short for the block to settle under gravity.
     const fs::path dir = freshDir( "unconverged" );
-    const fs::path file = writeCase( dir, mpm_test::blockCaseText( "", R"(
-[[stages]]
-name = "settle"
-type = "quasi_static"
-duration_s = 0.02
-)" ) );
+    const fs::path file = writeCase(
+        dir, mpm_test::blockCaseText(
+                 "", "\n" + mpm_test::stageToml( "settle", "quasi_static",
+                                                 "0.02" ) ) );
     const auto result =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial --quiet" );
-    EXPECT_EQ( result.exit_code, 0 ) << result.output;
-    EXPECT_NE( result.output.find( "did not converge" ), std::string::npos )
-        << result.output;
+        runCommand( mpm_test::runArgs( file, dir / "out", " --quiet" ) );
+    mpm_test::expectExit( result, 0, "did not converge" );
     std::ifstream in( dir / "out" / "metrics.json" );
     const auto metrics = nlohmann::json::parse( in );
     EXPECT_EQ( metrics["status"], "unconverged" );

@@ -7,15 +7,13 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace
 {
 namespace fs = std::filesystem;
 
-mpm_test::CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runLogged( args, "rainslide_cli_warnings.log" );
-}
+using mpm_test::runCommand;
 
 //! How often `text` occurs in `output`.
 int occurrences( const std::string& output, const std::string& text )
@@ -50,29 +48,23 @@ std::string positionOf( const fs::path& file, const std::string& text,
   (selects nothing), the second rains on a polyline above the soil
   (nothing) and on one along the soil's top that starts left of the grid.
 */
-const std::string two_phase_text =
-    mpm_test::saturatedColumnCaseText( "warned_column", R"(
-[[stages]]
-name = "settle"
-type = "dynamic"
-duration_s = 0.005
-[[stages.pore_pressures]]
-where = "box"
-box_m = [[0.0, 2.2], [0.5, 2.4]]
-pressure_pa = 0.0
-[[stages]]
-name = "rain"
-type = "dynamic"
-duration_s = 0.005
-[[stages.inflows]]
-where = "polyline"
-polyline_m = [[0.0, 2.3], [0.5, 2.3]]
-flux_m_per_s = 1.0e-4
-[[stages.inflows]]
-where = "polyline"
-polyline_m = [[-0.5, 2.0], [0.5, 2.0]]
-flux_m_per_s = 1.0e-4
-)" );
+const std::string two_phase_text = mpm_test::saturatedColumnCaseText(
+    "warned_column",
+    "\n" + mpm_test::stageToml( "settle", "dynamic", "0.005" ) +
+        mpm_test::heldBoxToml( "[[0.0, 2.2], [0.5, 2.4]]", "0.0" ) +
+        mpm_test::stageToml( "rain", "dynamic", "0.005" ) +
+        mpm_test::polylineInflowToml( "[[0.0, 2.3], [0.5, 2.3]]", "1.0e-4" ) +
+        mpm_test::polylineInflowToml( "[[-0.5, 2.0], [0.5, 2.0]]", "1.0e-4" ) );
+
+//! Expects `result` to have exited with 0 and to hold each of `warnings`
+//! once.
+void expectEachOnce( const mpm_test::CommandResult& result,
+                     const std::vector<std::string>& warnings )
+{
+    EXPECT_EQ( result.exit_code, 0 ) << result.output;
+    for ( const std::string& warning : warnings )
+        EXPECT_EQ( occurrences( result.output, warning ), 1 ) << result.output;
+}
 
 //---------------------------------------------------------------------------//
 TEST( CliWarnings, empty_selections_and_outside_points_warn_at_check_and_run )
@@ -90,27 +82,16 @@ TEST( CliWarnings, empty_selections_and_outside_points_warn_at_check_and_run )
         "key 'stages[1].inflows[0].where': selects no material point";
 
     const auto check = runCommand( "check " + file.string() );
-    EXPECT_EQ( check.exit_code, 0 ) << check.output;
-    EXPECT_EQ( occurrences( check.output, outside ), 1 ) << check.output;
     const std::string at_start = " at the points' initial positions";
-    EXPECT_EQ( occurrences( check.output, prefix + pore_pressures + at_start ),
-               1 )
-        << check.output;
-    EXPECT_EQ( occurrences( check.output, prefix + inflow + at_start ), 1 )
-        << check.output;
+    expectEachOnce( check, { outside, prefix + pore_pressures + at_start,
+                             prefix + inflow + at_start } );
     EXPECT_EQ( occurrences( check.output, "warning:" ), 3 ) << check.output;
 
     const auto run =
-        runCommand( "run " + file.string() + " --out " +
-                    ( dir / "out" ).string() + " --backend serial --quiet" );
-    EXPECT_EQ( run.exit_code, 0 ) << run.output;
-    EXPECT_EQ( occurrences( run.output, outside ), 1 ) << run.output;
+        runCommand( mpm_test::runArgs( file, dir / "out", " --quiet" ) );
     const std::string at_stage = " at the stage start";
-    EXPECT_EQ( occurrences( run.output, prefix + pore_pressures + at_stage ),
-               1 )
-        << run.output;
-    EXPECT_EQ( occurrences( run.output, prefix + inflow + at_stage ), 1 )
-        << run.output;
+    expectEachOnce( run, { outside, prefix + pore_pressures + at_stage,
+                           prefix + inflow + at_stage } );
     EXPECT_EQ( occurrences( run.output, "warning:" ), 3 ) << run.output;
     EXPECT_TRUE( fs::exists( dir / "out" / "metrics.json" ) );
 }
@@ -120,21 +101,14 @@ TEST( CliWarnings, empty_selections_and_outside_points_warn_at_check_and_run )
 TEST( CliWarnings, dry_load_and_boundary_line_warn )
 {
     const fs::path dir = mpm_test::freshTempDir( "warnings_dry" );
-    const std::string text = mpm_test::blockCaseText( "", R"(
-[[boundaries]]
-where = "below_polyline"
-condition = "fixed"
-polyline_m = [[0.0, 0.1], [2.0, 0.1], [2.5, 0.1]]
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = 0.01
-[[stages.loads]]
-where = "box"
-box_m = [[1.6, 0.0], [1.9, 2.0]]
-traction_pa = [0.0, -1.0e3]
-length_m = 0.5
-)" );
+    const std::string text = mpm_test::blockCaseText(
+        "",
+        "\n" +
+            mpm_test::fixedBelowToml( "[[0.0, 0.1], [2.0, 0.1], [2.5, 0.1]]" ) +
+            mpm_test::stageToml( "load", "dynamic", "0.01" ) +
+            "[[stages.loads]]\nwhere = \"box\"\n"
+            "box_m = [[1.6, 0.0], [1.9, 2.0]]\n"
+            "traction_pa = [0.0, -1.0e3]\nlength_m = 0.5\n" );
     const fs::path file = mpm_test::writeCase( dir, text );
     const std::string boundary =
         positionOf( file, text, "[2.5, 0.1]" ) +
@@ -151,9 +125,7 @@ length_m = 0.5
             ( command == "run"
                   ? " --out " + ( dir / "out" ).string() + " --quiet"
                   : "" ) );
-        EXPECT_EQ( result.exit_code, 0 ) << result.output;
-        EXPECT_EQ( occurrences( result.output, boundary ), 1 ) << result.output;
-        EXPECT_EQ( occurrences( result.output, load ), 1 ) << result.output;
+        expectEachOnce( result, { boundary, load } );
     }
 }
 
@@ -161,17 +133,13 @@ length_m = 0.5
 TEST( CliWarnings, a_clean_case_has_no_warning )
 {
     const fs::path dir = mpm_test::freshTempDir( "warnings_none" );
-    const fs::path file =
-        mpm_test::writeCase( dir, mpm_test::blockCaseText( "", R"(
-[[stages]]
-name = "load"
-type = "dynamic"
-duration_s = 0.01
-[[stages.loads]]
-where = "all"
-traction_pa = [0.0, -1.0e3]
-length_m = 1.0
-)" ) );
+    const std::string load_all =
+        "[[stages.loads]]\nwhere = \"all\"\n"
+        "traction_pa = [0.0, -1.0e3]\nlength_m = 1.0\n";
+    const fs::path file = mpm_test::writeCase(
+        dir, mpm_test::blockCaseText(
+                 "", "\n" + mpm_test::stageToml( "load", "dynamic", "0.01" ) +
+                         load_all ) );
     const auto check = runCommand( "check " + file.string() );
     EXPECT_EQ( check.exit_code, 0 ) << check.output;
     EXPECT_EQ( check.output.find( "warning:" ), std::string::npos )

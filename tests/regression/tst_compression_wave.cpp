@@ -7,11 +7,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class CompressionWave : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( CompressionWave, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( CompressionWave );
 
 //! Records when a tracked point's velocity first falls below half of v0.
 class ArrivalObserver : public mpm::RunObserver

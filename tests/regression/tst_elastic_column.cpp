@@ -9,11 +9,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class ElasticColumn : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( ElasticColumn, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( ElasticColumn );
 
 //---------------------------------------------------------------------------//
 // Column under self-weight after a quasi-static stage: sigma_yy = -rho g d,

@@ -26,6 +26,52 @@ using namespace mpm_test::hard_cases;
 // The slope soil of the paper (Table 2): E = 10 MPa, nu = 0.33,
 using mpm_test::paperSoil;
 
+//! A saturated block `polygon_m` of the paper's soil without its retention
+//! law on `cells` cells of 0.25 m, one `stage`; points leaving the grid
+//! are removed if `remove`.
+mpm::CaseConfig saturatedBlock( const std::string& name,
+                                const std::array<int, 2>& cells,
+                                const std::vector<mpm::Point2>& polygon_m,
+                                mpm::StageConfig stage, const bool remove )
+{
+    mpm::CaseConfig config;
+    config.file = "<test>";
+    config.name = name;
+    config.analysis = mpm::AnalysisType::Saturated;
+    config.grid.origin_m = { 0.0, 0.0 };
+    config.grid.cell_size_m = 0.25;
+    config.grid.cells = cells;
+    auto soil = paperSoil();
+    soil.retention = mpm::RetentionConfig{};
+    config.materials = { soil };
+    mpm::BodyConfig block;
+    block.material = soil.name;
+    block.polygon_m = polygon_m;
+    config.bodies = { block };
+    stage.materials = config.materials;
+    config.stages = { stage };
+    config.solver.remove_points_leaving_grid = remove;
+    return config;
+}
+
+//! The message of the SimulationError that stops the run of `config`
+//! ("" if it completes).
+template <class ExecSpace>
+std::string stopMessage( mpm::Simulation<ExecSpace>& sim,
+                         const mpm::CaseConfig& config )
+{
+    mpm::RunObserver observer;
+    try
+    {
+        mpm::runStages( sim, config, observer );
+    }
+    catch ( const mpm::SimulationError& error )
+    {
+        return error.what();
+    }
+    return "";
+}
+
 //---------------------------------------------------------------------------//
 /*!
   5. Points crossing cells: a 1 m x 1 m block (2 x 2 points in 0.25 m
@@ -160,45 +206,18 @@ TYPED_TEST( HardCases, points_leaving_the_grid )
     const double h = 0.25, g = 9.81;
     auto makeCase = [&]( const bool remove, const double duration )
     {
-        mpm::CaseConfig config;
-        config.file = "<test>";
-        config.name = "leaving";
-        config.analysis = mpm::AnalysisType::Saturated;
-        config.grid.origin_m = { 0.0, 0.0 };
-        config.grid.cell_size_m = h;
-        config.grid.cells = { 8, 12 }; // 2 m x 3 m
-        auto soil = paperSoil();
-        soil.retention = mpm::RetentionConfig{};
-        config.materials = { soil };
-        mpm::BodyConfig block;
-        block.material = soil.name;
-        block.polygon_m = {
-            { 0.5, 1.5 }, { 1.5, 1.5 }, { 1.5, 2.5 }, { 0.5, 2.5 } };
-        config.bodies = { block };
-        mpm::StageConfig stage;
-        stage.name = "fall";
-        stage.type = mpm::StageType::Dynamic;
-        stage.gravity_m_per_s2 = { 0.0, -g };
-        stage.duration_s = duration;
-        stage.materials = config.materials;
-        config.stages = { stage };
-        config.solver.remove_points_leaving_grid = remove;
-        return config;
+        return saturatedBlock(
+            "leaving", { 8, 12 }, // 2 m x 3 m
+            { { 0.5, 1.5 }, { 1.5, 1.5 }, { 1.5, 2.5 }, { 0.5, 2.5 } },
+            mpm_test::stageConfig( "fall", mpm::StageType::Dynamic, duration,
+                                   -g ),
+            remove );
     };
 
     { // stop with a diagnosis
         const auto config = makeCase( false, 1.0 );
         mpm::Simulation<TypeParam> sim( config );
-        mpm::RunObserver observer;
-        std::string message;
-        try
-        {
-            mpm::runStages( sim, config, observer );
-        }
-        catch ( const mpm::SimulationError& error )
-        {
-            message = error.what();
-        }
+        const std::string message = stopMessage( sim, config );
         std::printf( "leaving the grid: \"%s\"\n", message.c_str() );
         ASSERT_FALSE( message.empty() ) << "no SimulationError";
         EXPECT_NE( message.find( "material point " ), std::string::npos );
@@ -284,44 +303,18 @@ TYPED_TEST( HardCases, non_finite_state_is_not_a_point_leaving_the_grid )
 {
     for ( const bool remove : { false, true } )
     {
-        mpm::CaseConfig config;
-        config.file = "<test>";
-        config.name = "nan";
-        config.analysis = mpm::AnalysisType::Saturated;
-        config.grid.cell_size_m = 0.25;
-        config.grid.cells = { 8, 8 };
-        auto soil = paperSoil();
-        soil.retention = mpm::RetentionConfig{};
-        config.materials = { soil };
-        mpm::BodyConfig block;
-        block.material = soil.name;
-        block.polygon_m = {
-            { 0.5, 0.5 }, { 1.5, 0.5 }, { 1.5, 1.5 }, { 0.5, 1.5 } };
-        config.bodies = { block };
-        mpm::StageConfig stage;
-        stage.name = "rest";
-        stage.type = mpm::StageType::Dynamic;
-        stage.gravity_m_per_s2 = { 0.0, 0.0 };
-        stage.duration_s = 0.01;
-        stage.materials = config.materials;
-        config.stages = { stage };
-        config.solver.remove_points_leaving_grid = remove;
+        const mpm::CaseConfig config = saturatedBlock(
+            "nan", { 8, 8 },
+            { { 0.5, 0.5 }, { 1.5, 0.5 }, { 1.5, 1.5 }, { 0.5, 1.5 } },
+            mpm_test::stageConfig( "rest", mpm::StageType::Dynamic, 0.01, 0.0 ),
+            remove );
 
         mpm::Simulation<TypeParam> sim( config );
         auto p_w = Kokkos::create_mirror_view_and_copy(
             Kokkos::HostSpace(), sim.water_particles.p_w_p );
         p_w( 0 ) = std::nan( "" );
         Kokkos::deep_copy( sim.water_particles.p_w_p, p_w );
-        mpm::RunObserver observer;
-        std::string message;
-        try
-        {
-            mpm::runStages( sim, config, observer );
-        }
-        catch ( const mpm::SimulationError& error )
-        {
-            message = error.what();
-        }
+        const std::string message = stopMessage( sim, config );
         std::printf( "NaN state (remove_points_leaving_grid = %d): %d points "
                      "removed, \"%s\"\n",
                      remove, sim.num_removed,

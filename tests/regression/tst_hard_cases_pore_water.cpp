@@ -57,12 +57,8 @@ TYPED_TEST( HardCases, low_permeability_load_is_carried_by_skempton_b )
     for ( const Variant variant : { Variant{ 1.0e7, false, 0.3, 0.05 },
                                     Variant{ 1.0e9, true, 0.1, 0.02 } } )
     {
-        mpm::StageConfig stage;
-        stage.name = "load";
-        stage.type = mpm::StageType::Dynamic;
-        stage.gravity_m_per_s2 = { 0.0, 0.0 };
-        stage.damping = 0.3;
-        stage.duration_s = variant.duration;
+        mpm::StageConfig stage = mpm_test::stageConfig(
+            "load", mpm::StageType::Dynamic, variant.duration, 0.0, 0.3 );
         auto config = mpm_test::columnCase(
             H, h, mpm_test::saturatedMaterial( variant.E, 0.0, 2700.0, n, k ),
             stage );
@@ -134,10 +130,8 @@ TYPED_TEST( HardCases, low_permeability_load_is_carried_by_skempton_b )
 TYPED_TEST( HardCases, stiff_pore_fluid_settles_to_hydrostatic )
 {
     const double H = 1.0, h = 0.1, n = 0.1, rho_s = 2700.0;
-    mpm::StageConfig stage;
-    stage.name = "settle";
-    stage.type = mpm::StageType::Dynamic;
-    stage.duration_s = 1.5;
+    mpm::StageConfig stage =
+        mpm_test::stageConfig( "settle", mpm::StageType::Dynamic, 1.5, -9.81 );
     const auto soil =
         mpm_test::saturatedMaterial( 1.0e7, 0.3, rho_s, n, 1.0e-9 );
     auto config = mpm_test::columnCase( H, h, soil, stage );
@@ -200,10 +194,8 @@ TYPED_TEST( HardCases, tiny_nodal_mass_keeps_velocities_bounded )
           { mpm::AnalysisType::Saturated, mpm::AnalysisType::Unsaturated } )
         for ( const double offset : { 1.0e-6, 1.0e-12, 0.0 } )
         {
-            mpm::StageConfig stage;
-            stage.name = "gravity";
-            stage.type = mpm::StageType::Dynamic;
-            stage.duration_s = 0.2;
+            mpm::StageConfig stage = mpm_test::stageConfig(
+                "gravity", mpm::StageType::Dynamic, 0.2, -9.81 );
             auto soil = paperSoil();
             auto config = mpm_test::columnCase( H, h, soil, stage );
             config.analysis = analysis;
@@ -281,10 +273,8 @@ TYPED_TEST( HardCases, tiny_nodal_mass_keeps_velocities_bounded )
 TYPED_TEST( HardCases, zero_relative_permeability_locks_water_to_solid )
 {
     const double H = 1.0, h = 0.1, suction = 2.2e4;
-    mpm::StageConfig stage;
-    stage.name = "gravity";
-    stage.type = mpm::StageType::Dynamic;
-    stage.duration_s = 0.05;
+    mpm::StageConfig stage = mpm_test::stageConfig(
+        "gravity", mpm::StageType::Dynamic, 0.05, -9.81 );
     auto sand =
         mpm_test::saturatedMaterial( 1.3e6, 0.4, 2000.0, 0.2975, 4.5e-13 );
     sand.retention.model = mpm::RetentionType::Liakopoulos;

@@ -21,11 +21,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class HeldPorePressure : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( HeldPorePressure, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( HeldPorePressure );
 
 //! Two segments: hydrostatic below the water table at y = 1 m, a suction
 //! growing three times as fast above it (not in equilibrium).

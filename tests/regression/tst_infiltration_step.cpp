@@ -13,11 +13,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class InfiltrationStep : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( InfiltrationStep, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( InfiltrationStep );
 
 /*!
   A 5 m column of the slope study's soil (K = 0.044 m/s, van Genuchten) at
@@ -27,35 +23,14 @@ TYPED_TEST_SUITE( InfiltrationStep, mpm_test::Backends, mpm_test::BackendName );
 */
 std::string wettingColumn( const std::string& solver )
 {
-    return R"(
-[case]
-name = "wetting_column"
-analysis = "unsaturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.5
-cells = [1, 12]
-)" + mpm_test::slopeSoilToml() +
-           R"(
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 5.0], [0.0, 5.0]]
-initial_pore_pressure_pa = -50.0e3
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[solver]
-)" + solver +
-           R"(
-[[stages]]
-name = "rain"
-type = "dynamic"
-duration_s = 2.0
-[[stages.pore_pressures]]
-where = "box"
-box_m = [[0.0, 4.5], [0.5, 5.0]]
-pressure_pa = 0.0
-)";
+    using namespace mpm_test;
+    return "\n" + caseToml( "wetting_column", "unsaturated" ) +
+           gridToml( "0.5", "[1, 12]" ) + slopeSoilToml() + "\n" +
+           soilBodyToml( rectangleToml( "0.5", "5.0" ) ) +
+           "initial_pore_pressure_pa = -50.0e3\n" +
+           boundaryToml( "bottom", "fixed" ) + "[solver]\n" + solver + "\n" +
+           stageToml( "rain", "dynamic", "2.0" ) +
+           heldBoxToml( "[[0.0, 4.5], [0.5, 5.0]]", "0.0" );
 }
 
 //! Water taken up in 2 s, m^3 per metre.

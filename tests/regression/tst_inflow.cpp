@@ -8,11 +8,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class Inflow : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Inflow, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Inflow );
 
 using mpm_test::waterVolume;
 
@@ -26,19 +22,10 @@ using mpm_test::waterVolume;
 */
 TYPED_TEST( Inflow, rainfall_flux_adds_its_water_volume )
 {
-    const mpm::MaterialConfig soil = mpm_test::paperSoil();
-    mpm::StageConfig rain;
-    rain.name = "rain";
-    rain.type = mpm::StageType::Dynamic;
-    rain.gravity_m_per_s2 = { 0.0, 0.0 };
-    rain.duration_s = 2.0;
-    auto config = mpm_test::columnCase( 1.0, 0.25, soil, rain );
-    config.analysis = mpm::AnalysisType::Unsaturated;
+    auto config = mpm_test::paperSoilColumn( 1.0, 2.0, 0.0 );
     config.grid.cells[1] = 4; // the top edge seals the soil's top
     config.bodies[0].initial_pore_pressure_pa = -2.0e4;
-    mpm::WaterInflow inflow;
-    inflow.points.kind = mpm::PointSelection::Kind::SurfaceCells;
-    inflow.flux_m_per_s = 1.0e-4;
+    mpm::WaterInflow inflow = mpm_test::surfaceCellsInflow( 1.0e-4 );
     inflow.length_m = 0.25;
     inflow.ponding = false;
     config.stages[0].inflows = { inflow };

@@ -14,11 +14,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class Liakopoulos : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Liakopoulos, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Liakopoulos );
 
 //! Reference profile p_w(height) at one time (OpenGeoSys,
 //! tests/data/reference).

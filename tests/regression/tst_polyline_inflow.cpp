@@ -17,11 +17,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class PolylineInflow : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( PolylineInflow, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( PolylineInflow );
 
 //! Collects the warnings of a run.
 class WarningRecorder : public mpm::RunObserver

@@ -22,11 +22,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-template <class ExecSpace>
-class Restart : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Restart, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Restart );
 
 using namespace mpm_test::restart;
 
@@ -71,11 +67,8 @@ mpm::CaseConfig twoPhaseCase()
     c.solver.bbar = true;
     c.solver.checkpoint_interval_s = 6.0e-3;
 
-    mpm::StageConfig gravity;
-    gravity.name = "gravity";
-    gravity.type = mpm::StageType::QuasiStatic;
-    gravity.damping = 0.7;
-    gravity.duration_s = 0.03;
+    mpm::StageConfig gravity = mpm_test::stageConfig(
+        "gravity", mpm::StageType::QuasiStatic, 0.03, -9.81, 0.7 );
     gravity.snapshot_interval_s = 0.01;
     gravity.reset_displacement = true;
     gravity.materials = c.materials;
@@ -190,6 +183,27 @@ struct Finished
     mpm::RunSummary summary;
 };
 
+//! Whether runs on ExecSpace repeat bit for bit (Serial).
+template <class ExecSpace>
+constexpr bool bitwise = std::is_same_v<ExecSpace, Kokkos::Serial>;
+
+//! The checkpoint file of a fresh scratch folder `name`.
+std::string checkpointFile( const std::string& name )
+{
+    return ( freshDir( name ) / "checkpoint.h5" ).string();
+}
+
+//! Expects `resumed` to end as `full` did: the same summary and final
+//! state (bitwise if `exact`).
+template <class ExecSpace>
+void expectSameEnd( Finished<ExecSpace>& full, Finished<ExecSpace>& resumed,
+                    const mpm::CaseConfig& config, const bool exact )
+{
+    expectSameSummary( full.summary, resumed.summary, exact );
+    expectSameState( mpm::captureCheckpoint( full.sim, config, {} ),
+                     mpm::captureCheckpoint( resumed.sim, config, {} ), exact );
+}
+
 //---------------------------------------------------------------------------//
 // The checkpoint names every View of the point structs (a View added to
 // them must be added to their struct's forEachViewOf).
@@ -219,9 +233,8 @@ TYPED_TEST( Restart, checkpoint_lists_every_point_view )
 TYPED_TEST( Restart, two_phase_restart_matches_uninterrupted_run )
 {
     const auto config = twoPhaseCase();
-    const bool exact = std::is_same_v<TypeParam, Kokkos::Serial>;
-    const fs::path dir = freshDir( "two_phase" );
-    const std::string file = ( dir / "checkpoint.h5" ).string();
+    const bool exact = bitwise<TypeParam>;
+    const std::string file = checkpointFile( "two_phase" );
 
     Finished<TypeParam> full( config );
     const auto& stages = full.summary.stages;
@@ -259,9 +272,7 @@ TYPED_TEST( Restart, two_phase_restart_matches_uninterrupted_run )
     // Continue to the end.
     Finished<TypeParam> part3( config, &checkpoint2 );
     EXPECT_FALSE( part3.summary.interrupted );
-    expectSameSummary( full.summary, part3.summary, exact );
-    expectSameState( mpm::captureCheckpoint( full.sim, config, {} ),
-                     mpm::captureCheckpoint( part3.sim, config, {} ), exact );
+    expectSameEnd( full, part3, config, exact );
 
     // The snapshots after each checkpoint are those of the full run (the
     // last one of a stopped run is at the stop: not part of the series).
@@ -282,7 +293,7 @@ TYPED_TEST( Restart, two_phase_restart_matches_uninterrupted_run )
 TYPED_TEST( Restart, periodic_checkpoint_continues_exactly )
 {
     const auto config = twoPhaseCase();
-    const bool exact = std::is_same_v<TypeParam, Kokkos::Serial>;
+    const bool exact = bitwise<TypeParam>;
     Finished<TypeParam> full( config );
     ASSERT_GE( full.observer.checkpoints.size(), 3u );
 
@@ -291,9 +302,7 @@ TYPED_TEST( Restart, periodic_checkpoint_continues_exactly )
     EXPECT_GT( third.loop.next_checkpoint_s, third.time_s );
 
     Finished<TypeParam> resumed( config, &third );
-    expectSameSummary( full.summary, resumed.summary, exact );
-    expectSameState( mpm::captureCheckpoint( full.sim, config, {} ),
-                     mpm::captureCheckpoint( resumed.sim, config, {} ), exact );
+    expectSameEnd( full, resumed, config, exact );
     // The resumed run writes the later periodic checkpoints again.
     const auto& steps = full.observer.checkpoints;
     EXPECT_EQ( std::vector<long>( steps.begin() + 3, steps.end() ),
@@ -305,9 +314,8 @@ TYPED_TEST( Restart, periodic_checkpoint_continues_exactly )
 TYPED_TEST( Restart, dry_restart_matches_uninterrupted_run )
 {
     const auto config = dryCase();
-    const bool exact = std::is_same_v<TypeParam, Kokkos::Serial>;
-    const fs::path dir = freshDir( "dry" );
-    const std::string file = ( dir / "checkpoint.h5" ).string();
+    const bool exact = bitwise<TypeParam>;
+    const std::string file = checkpointFile( "dry" );
 
     Finished<TypeParam> full( config );
     const long stop = full.summary.steps / 3;
@@ -317,9 +325,7 @@ TYPED_TEST( Restart, dry_restart_matches_uninterrupted_run )
     EXPECT_EQ( checkpoint.identity.analysis, "dry" );
     EXPECT_EQ( checkpoint.find( "water/p_w_p" ), nullptr );
     Finished<TypeParam> resumed( config, &checkpoint );
-    expectSameSummary( full.summary, resumed.summary, exact );
-    expectSameState( mpm::captureCheckpoint( full.sim, config, {} ),
-                     mpm::captureCheckpoint( resumed.sim, config, {} ), exact );
+    expectSameEnd( full, resumed, config, exact );
 }
 
 //---------------------------------------------------------------------------//

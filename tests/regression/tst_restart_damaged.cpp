@@ -26,32 +26,18 @@ namespace
 namespace fs = std::filesystem;
 
 using mpm_test::CommandResult;
-
-CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runLogged( args, "rainslide_damaged.log" );
-}
+using mpm_test::runCommand;
 
 /*!
   A saturated column 0.5 m x 2 m with p_w held on its top points and rain
   on a polyline along its top, one dynamic stage: its checkpoint has point
   conditions (water/p_w_condition_p, water/inflow_p).
 */
-const std::string two_phase_text =
-    mpm_test::saturatedColumnCaseText( "wet_column", R"(
-[[stages]]
-name = "rain"
-type = "dynamic"
-duration_s = 0.2
-[[stages.pore_pressures]]
-where = "box"
-box_m = [[0.0, 1.75], [0.5, 2.0]]
-pressure_pa = 0.0
-[[stages.inflows]]
-where = "polyline"
-polyline_m = [[0.0, 2.0], [0.5, 2.0]]
-flux_m_per_s = 1.0e-4
-)" );
+const std::string two_phase_text = mpm_test::saturatedColumnCaseText(
+    "wet_column",
+    "\n" + mpm_test::stageToml( "rain", "dynamic", "0.2" ) +
+        mpm_test::heldBoxToml( "[[0.0, 1.75], [0.5, 2.0]]", "0.0" ) +
+        mpm_test::polylineInflowToml( "[[0.0, 2.0], [0.5, 2.0]]", "1.0e-4" ) );
 
 //! A run of `text` (default: the test block) stopped after 30 steps
 //! (checkpoint and probes in dir/out); returns the case file.
@@ -62,12 +48,31 @@ stoppedRun( const fs::path& dir,
     fs::remove_all( dir );
     fs::create_directories( dir );
     const fs::path file = mpm_test::writeCase( dir, text );
-    const auto stopped = runCommand( "run " + file.string() + " --out " +
-                                     ( dir / "out" ).string() +
-                                     " --backend serial --quiet "
-                                     "--stop-after-steps 30" );
+    const auto stopped = runCommand( mpm_test::runArgs(
+        file, dir / "out", " --quiet --stop-after-steps 30" ) );
     EXPECT_EQ( stopped.exit_code, 130 ) << stopped.output;
     return file;
+}
+
+//! Flips the bits `mask` of the byte at `offset` of `file`.
+void flipByte( const fs::path& file, const std::uintmax_t offset,
+               const int mask )
+{
+    std::fstream f( file, std::ios::in | std::ios::out | std::ios::binary );
+    f.seekg( static_cast<std::streamoff>( offset ) );
+    char byte = 0;
+    f.read( &byte, 1 );
+    byte = static_cast<char>( byte ^ mask );
+    f.seekp( static_cast<std::streamoff>( offset ) );
+    f.write( &byte, 1 );
+}
+
+//! `run` of `file` restarted from `checkpoint` (Serial, quiet), then `extra`.
+CommandResult restartRun( const fs::path& file, const fs::path& checkpoint,
+                          const std::string& extra = "" )
+{
+    return runCommand( "run " + file.string() + " --backend serial --quiet" +
+                       extra + " --restart " + checkpoint.string() );
 }
 
 //! Restart after `damage` changed the checkpoint: exit 2 with `fragment`.
@@ -85,14 +90,8 @@ void expectDamageRefused(
     mpm::Checkpoint c = mpm::readCheckpoint( checkpoint );
     damage( c );
     mpm::writeCheckpoint( checkpoint, c );
-    const auto result = runCommand( "run " + file.string() +
-                                    " --backend serial --quiet "
-                                    "--restart " +
-                                    checkpoint );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE( result.output.find( "is damaged: " + fragment ),
-               std::string::npos )
-        << result.output;
+    mpm_test::expectExit( restartRun( file, checkpoint ), 2,
+                          "is damaged: " + fragment );
 }
 
 mpm::CheckpointArray& array( mpm::Checkpoint& c, const std::string& name )
@@ -103,14 +102,27 @@ mpm::CheckpointArray& array( mpm::Checkpoint& c, const std::string& name )
     throw std::runtime_error( "no array " + name );
 }
 
+//! Restart after the index `array_name`[index] was set to `value`: refused
+//! as outside `range`.
+void expectIndexRefused(
+    const std::string& name, const std::string& array_name, const int index,
+    const int value, const std::string& range,
+    const std::string& text = mpm_test::probedBlockCaseText( "0.2" ) )
+{
+    expectDamageRefused(
+        name,
+        [&]( mpm::Checkpoint& c )
+        { array( c, array_name ).integers[index] = value; },
+        array_name + "[" + std::to_string( index ) +
+            "]: expected an index in " + range + ", found " +
+            std::to_string( value ),
+        text );
+}
+
 //---------------------------------------------------------------------------//
 TEST( RestartDamaged, out_of_range_values_are_refused )
 {
-    expectDamageRefused(
-        "material",
-        []( mpm::Checkpoint& c )
-        { array( c, "particles/material_p" ).integers[3] = 7; },
-        "particles/material_p[3]: expected an index in 0..0, found 7" );
+    expectIndexRefused( "material", "particles/material_p", 3, 7, "0..0" );
     expectDamageRefused(
         "position",
         []( mpm::Checkpoint& c )
@@ -136,24 +148,12 @@ TEST( RestartDamaged, out_of_range_values_are_refused )
 // were skipped: their group is "water/", not "water_particles/").
 TEST( RestartDamaged, out_of_range_point_conditions_are_refused )
 {
-    expectDamageRefused(
-        "condition",
-        []( mpm::Checkpoint& c )
-        { array( c, "water/p_w_condition_p" ).integers[2] = 1; },
-        "water/p_w_condition_p[2]: expected an index in -1..0, found 1",
-        two_phase_text );
-    expectDamageRefused(
-        "inflow",
-        []( mpm::Checkpoint& c )
-        { array( c, "water/inflow_p" ).integers[0] = -2; },
-        "water/inflow_p[0]: expected an index in -1..0, found -2",
-        two_phase_text );
-    expectDamageRefused(
-        "load",
-        []( mpm::Checkpoint& c )
-        { array( c, "particles/load_p" ).integers[1] = 0; },
-        "particles/load_p[1]: expected an index in -1..-1, found 0",
-        two_phase_text );
+    expectIndexRefused( "condition", "water/p_w_condition_p", 2, 1, "-1..0",
+                        two_phase_text );
+    expectIndexRefused( "inflow", "water/inflow_p", 0, -2, "-1..0",
+                        two_phase_text );
+    expectIndexRefused( "load", "particles/load_p", 1, 0, "-1..-1",
+                        two_phase_text );
     expectDamageRefused(
         "load_group",
         []( mpm::Checkpoint& c ) { c.load_groups.push_back( { 3 } ); },
@@ -195,24 +195,9 @@ TEST( RestartDamaged, flipped_byte_in_a_dataset_is_refused )
         H5Dclose( dset );
         H5Fclose( h5 );
     }
-    {
-        std::fstream f( checkpoint,
-                        std::ios::in | std::ios::out | std::ios::binary );
-        f.seekg( static_cast<std::streamoff>( address + 100 ) );
-        char byte = 0;
-        f.read( &byte, 1 );
-        byte = static_cast<char>( byte ^ 0x10 );
-        f.seekp( static_cast<std::streamoff>( address + 100 ) );
-        f.write( &byte, 1 );
-    }
-    const auto result = runCommand( "run " + file.string() +
-                                    " --backend serial --quiet "
-                                    "--restart " +
-                                    checkpoint.string() );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE( result.output.find( "cannot read checkpoint" ),
-               std::string::npos )
-        << result.output;
+    flipByte( checkpoint, address + 100, 0x10 );
+    mpm_test::expectExit( restartRun( file, checkpoint ), 2,
+                          "cannot read checkpoint" );
 }
 
 // An attribute changed in place (a valid, finite time) is caught by the
@@ -262,14 +247,9 @@ TEST( RestartDamaged, changed_attribute_is_refused )
             H5Sclose( space );
             H5Fclose( h5 );
         }
-        const auto result = runCommand(
-            "run " + file.string() + " --backend serial --quiet --out " +
-            ( dir / "again" ).string() + " --restart " + copy );
-        EXPECT_EQ( result.exit_code, 2 ) << result.output;
-        EXPECT_NE( result.output.find( "do not match their checksum: the "
-                                       "file is damaged" ),
-                   std::string::npos )
-            << result.output;
+        mpm_test::expectExit(
+            restartRun( file, copy, " --out " + ( dir / "again" ).string() ), 2,
+            "do not match their checksum: the file is damaged" );
     }
 }
 
@@ -287,9 +267,7 @@ TEST( RestartDamaged, random_byte_flips_are_refused_or_harmless )
     const auto restart = [&]( const fs::path& from, const std::string& name )
     {
         fs::remove_all( dir / name );
-        return runCommand(
-            "run " + file.string() + " --backend serial --quiet --out " +
-            ( dir / name ).string() + " --restart " + from.string() );
+        return restartRun( file, from, " --out " + ( dir / name ).string() );
     };
     const auto reference = restart( checkpoint, "reference" );
     ASSERT_EQ( reference.exit_code, 0 ) << reference.output;
@@ -309,16 +287,7 @@ TEST( RestartDamaged, random_byte_flips_are_refused_or_harmless )
         const fs::path flipped = out / "flipped.h5";
         fs::copy_file( checkpoint, flipped,
                        fs::copy_options::overwrite_existing );
-        {
-            std::fstream f( flipped,
-                            std::ios::in | std::ios::out | std::ios::binary );
-            f.seekg( static_cast<std::streamoff>( at ) );
-            char byte = 0;
-            f.read( &byte, 1 );
-            byte = static_cast<char>( byte ^ ( 1 << ( k % 8 ) ) );
-            f.seekp( static_cast<std::streamoff>( at ) );
-            f.write( &byte, 1 );
-        }
+        flipByte( flipped, at, 1 << ( k % 8 ) );
         const auto result = restart( flipped, "flipped" );
         SCOPED_TRACE( "byte " + std::to_string( at ) + " of " +
                       std::to_string( size ) + ": exit " +
@@ -354,14 +323,9 @@ TEST( RestartDamaged, malformed_probes_file_keeps_the_particles )
                              ? out / "probes.csv"
                              : out / "probes.csv.partial";
     std::ofstream( csv, std::ios::app ) << "garbage,load,top\n";
-    const auto result = runCommand( "run " + file.string() +
-                                    " --backend serial --quiet --restart " +
-                                    ( out / "checkpoint.h5" ).string() );
-    EXPECT_EQ( result.exit_code, 2 ) << result.output;
-    EXPECT_NE( result.output.find( "expected the time in s as the first "
-                                   "column, found 'garbage'" ),
-               std::string::npos )
-        << result.output;
+    mpm_test::expectExit( restartRun( file, out / "checkpoint.h5" ), 2,
+                          "expected the time in s as the first column, found "
+                          "'garbage'" );
     EXPECT_EQ( mpm_test::snapshotCount( h5 ), before );
 }
 

@@ -16,10 +16,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-mpm_test::CommandResult runCommand( const std::string& args )
-{
-    return mpm_test::runLogged( args, "rainslide_restart_probes.log" );
-}
+using mpm_test::runCommand;
 
 //! The time column of every row of a probes.csv.
 std::vector<std::string> sampleTimes( const fs::path& csv )

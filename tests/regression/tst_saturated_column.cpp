@@ -12,11 +12,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class SaturatedColumn : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( SaturatedColumn, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( SaturatedColumn );
 
 //! Cell means (by initial height) of a point field.
 std::map<int, std::pair<double, double>>
@@ -46,12 +42,9 @@ TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
 {
     using exec_space = TypeParam;
     const double H = 2.0, h = 0.1, g = 9.81, n = 0.3, rho_s = 2650.0;
-    mpm::StageConfig stage;
-    stage.name = "settle";
-    stage.type = mpm::StageType::Dynamic;
-    stage.gravity_m_per_s2 = { 0.0, -g };
-    stage.damping = 0.5;
-    stage.duration_s = 1.5; // about 5 consolidation times H^2 / c_v
+    // 1.5 s: about 5 consolidation times H^2 / c_v
+    mpm::StageConfig stage = mpm_test::stageConfig(
+        "settle", mpm::StageType::Dynamic, 1.5, -g, 0.5 );
     auto config = mpm_test::columnCase(
         H, h, mpm_test::saturatedMaterial( 1.0e7, 0.3, rho_s, n, 1.0e-9 ),
         stage );
@@ -99,12 +92,8 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
 {
     using exec_space = TypeParam;
     const double H = 1.0, h = 0.1, n = 0.3, E = 1.0e7, K_w = 2.0e7;
-    mpm::StageConfig stage;
-    stage.name = "load";
-    stage.type = mpm::StageType::Dynamic;
-    stage.gravity_m_per_s2 = { 0.0, 0.0 };
-    stage.damping = 0.3;
-    stage.duration_s = 0.5;
+    mpm::StageConfig stage =
+        mpm_test::stageConfig( "load", mpm::StageType::Dynamic, 0.5, 0.0, 0.3 );
     auto config = mpm_test::columnCase(
         H, h, mpm_test::saturatedMaterial( E, 0.0, 2650.0, n, 1.0e-14 ),
         stage );

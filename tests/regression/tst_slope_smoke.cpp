@@ -21,11 +21,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class SlopeSmoke : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( SlopeSmoke, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( SlopeSmoke );
 
 using mpm_test::waterVolume;
 
@@ -80,21 +76,12 @@ TYPED_TEST( SlopeSmoke, coarse_base_case_wets_its_surface )
 */
 TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
 {
-    const mpm::MaterialConfig soil = mpm_test::paperSoil();
-    mpm::StageConfig rain;
-    rain.name = "rain";
-    rain.type = mpm::StageType::Dynamic;
-    rain.gravity_m_per_s2 = { 0.0, 0.0 };
-    rain.duration_s = 1.0;
-    auto config = mpm_test::columnCase( 2.0, 0.25, soil, rain );
-    config.analysis = mpm::AnalysisType::Unsaturated;
+    auto config = mpm_test::paperSoilColumn( 2.0, 1.0, 0.0 );
     config.grid.cells = { 16, 8 };
     config.bodies[0].polygon_m = { { 0.0, 0.0 }, { 4.0, 0.0 }, { 4.0, 1.0 },
                                    { 2.0, 1.0 }, { 2.0, 2.0 }, { 0.0, 2.0 } };
     config.bodies[0].initial_pore_pressure_pa = -2.0e4;
-    mpm::WaterInflow inflow;
-    inflow.points.kind = mpm::PointSelection::Kind::SurfaceCells;
-    inflow.flux_m_per_s = 1.0e-4;
+    mpm::WaterInflow inflow = mpm_test::surfaceCellsInflow( 1.0e-4 );
     inflow.ponding = false;
     inflow.follow_surface_interval_s = 0.1;
     config.stages[0].inflows = { inflow };
@@ -118,20 +105,12 @@ TYPED_TEST( SlopeSmoke, rain_on_the_moving_surface_falls_on_its_projection )
 */
 TYPED_TEST( SlopeSmoke, fixed_inflows_keep_their_points_when_the_surface_moves )
 {
-    const mpm::MaterialConfig soil = mpm_test::paperSoil();
-    mpm::StageConfig rain;
-    rain.name = "rain";
-    rain.type = mpm::StageType::Dynamic;
-    rain.duration_s = 1.0;
-    auto config = mpm_test::columnCase( 2.0, 0.25, soil, rain );
-    config.analysis = mpm::AnalysisType::Unsaturated;
+    auto config = mpm_test::paperSoilColumn( 2.0, 1.0, -9.81 );
     mpm::WaterInflow fixed;
     fixed.points.kind = mpm::PointSelection::Kind::Box;
     fixed.points.box_m = { { { 0.0, 1.0 }, { 0.25, 1.25 } } };
     fixed.flux_m_per_s = 1.0e-5;
-    mpm::WaterInflow following;
-    following.points.kind = mpm::PointSelection::Kind::SurfaceCells;
-    following.flux_m_per_s = 1.0e-5;
+    mpm::WaterInflow following = mpm_test::surfaceCellsInflow( 1.0e-5 );
     following.follow_surface_interval_s = 0.1;
     config.stages[0].inflows = { fixed, following };
 

@@ -55,11 +55,7 @@ TEST( StaticAgain, waits_for_a_slide_then_for_the_window )
     EXPECT_EQ( displacement_calls, calls_at_slide );
 }
 
-template <class ExecSpace>
-class StaticStop : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( StaticStop, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( StaticStop );
 
 //! A dynamic stage of an elastic column (4 m, E = 1e8 Pa) under gravity.
 mpm::CaseConfig dampedColumn( const double gravity, const double duration_s )

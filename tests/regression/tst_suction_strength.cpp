@@ -7,11 +7,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class SuctionStrength : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( SuctionStrength, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( SuctionStrength );
 
 //! Records the prescribed pore pressure when an interior point first yields.
 template <class ExecSpace>
@@ -80,12 +76,8 @@ TYPED_TEST( SuctionStrength, loss_of_suction_yields_at_analytic_suction )
     soil.retention.residual_saturation = 0.5;
     soil.retention.suction_range_pa = 1.0e5;
 
-    mpm::StageConfig load;
-    load.name = "load";
-    load.type = mpm::StageType::Dynamic;
-    load.gravity_m_per_s2 = { 0.0, 0.0 };
-    load.damping = 0.5;
-    load.duration_s = 1.0;
+    mpm::StageConfig load =
+        mpm_test::stageConfig( "load", mpm::StageType::Dynamic, 1.0, 0.0, 0.5 );
     auto config = mpm_test::columnCase( 1.0, 0.25, soil, load );
     config.analysis = mpm::AnalysisType::Unsaturated;
     config.grid.cells = { 6, 6 };

@@ -10,11 +10,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class Terzaghi : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Terzaghi, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Terzaghi );
 
 //! Captures snapshots at given stage times.
 template <class ExecSpace>

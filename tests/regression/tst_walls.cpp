@@ -17,11 +17,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class Walls : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( Walls, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( Walls );
 
 //! Which side of a wall a point (x, y) is on: true beyond it.
 using Beyond = std::function<bool( double, double )>;

@@ -14,11 +14,7 @@
 
 namespace
 {
-template <class ExecSpace>
-class WaterBalance : public ::testing::Test
-{
-};
-TYPED_TEST_SUITE( WaterBalance, mpm_test::Backends, mpm_test::BackendName );
+MPM_TEST_BACKEND_SUITE( WaterBalance );
 
 constexpr double width = 0.2;  // m, two cells
 constexpr double height = 1.0; // m, ten cells
@@ -36,32 +32,15 @@ constexpr double K_s = 4.5e-9 * rho_w_g / 1.0e-3; // 0.0441 m/s
 std::string column( const double p_w0, const std::string& base_hydraulic,
                     const double duration, const std::string& stage )
 {
-    const std::string grid = R"([case]
-name = "water_balance"
-analysis = "unsaturated"
-[grid]
-origin_m = [0.0, 0.0]
-cell_size_m = 0.1
-cells = [2, 10]
-)";
-    char body[512];
-    std::snprintf( body, sizeof body, R"([[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [%.17g, 0.0], [%.17g, %.17g], [0.0, %.17g]]
-initial_pore_pressure_pa = %.17g
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-hydraulic = "%s"
-[[stages]]
-name = "flow"
-type = "dynamic"
-duration_s = %.17g
-)",
-                   width, width, height, height, p_w0, base_hydraulic.c_str(),
-                   duration );
-    const std::string text = grid + mpm_test::gardnerSoilOnRollersToml() + body;
-    return text + stage;
+    using namespace mpm_test;
+    return caseToml( "water_balance", "unsaturated" ) +
+           gridToml( "0.1", "[2, 10]" ) + gardnerSoilOnRollersToml() +
+           soilBodyToml(
+               rectangleToml( tomlNumber( width ), tomlNumber( height ) ) ) +
+           "initial_pore_pressure_pa = " + tomlNumber( p_w0 ) + "\n" +
+           boundaryToml( "bottom", "fixed" ) +
+           tomlString( "hydraulic", base_hydraulic ) +
+           stageToml( "flow", "dynamic", tomlNumber( duration ) ) + stage;
 }
 
 //! Runs `toml` and returns its summary (the run's water balance).
@@ -84,16 +63,31 @@ void print( const char* what, const mpm::physics::WaterBalance& w )
                  w.relativeClosureError() );
 }
 
+//! The water balance of a run of `toml`, printed as `what`.
+template <class ExecSpace>
+mpm::physics::WaterBalance balanceOf( const char* what,
+                                      const std::string& toml )
+{
+    const mpm::physics::WaterBalance water = run<ExecSpace>( toml ).water;
+    print( what, water );
+    return water;
+}
+
+//! [[stages.inflows]] of `flux` on `where`.
+std::string inflowToml( const std::string& where, const double flux )
+{
+    return "[[stages.inflows]]\n" + mpm_test::tomlString( "where", where ) +
+           "flux_m_per_s = " + mpm_test::tomlNumber( flux ) + "\n";
+}
+
 //---------------------------------------------------------------------------//
 // Water that only moves inside a sealed column stays there: no term but the
 // seepage between points, whose sum over the column is the flow across its
 // impermeable edges, zero.
 TYPED_TEST( WaterBalance, sealed_column_keeps_its_water )
 {
-    const auto summary =
-        run<TypeParam>( column( -5000.0, "impermeable", 1.0, "" ) );
-    const auto& w = summary.water;
-    print( "sealed column", w );
+    const auto w = balanceOf<TypeParam>(
+        "sealed column", column( -5000.0, "impermeable", 1.0, "" ) );
     EXPECT_GT( w.stored_start, 0.0 );
     EXPECT_EQ( w.point_inflow, 0.0 );
     EXPECT_EQ( w.runoff, 0.0 );
@@ -111,15 +105,11 @@ TYPED_TEST( WaterBalance, rain_is_taken_in_or_runs_off )
 {
     const double duration = 1.0;
     const double flux = 2.0 * K_s;
-    char inflow[256];
-    std::snprintf( inflow, sizeof inflow,
-                   "[[stages.inflows]]\nwhere = \"surface_cells\"\n"
-                   "flux_m_per_s = %.17g\nlength_m = %.17g\n",
-                   flux, width );
-    const auto summary =
-        run<TypeParam>( column( -5000.0, "drained", duration, inflow ) );
-    const auto& w = summary.water;
-    print( "rain on points", w );
+    const std::string inflow = inflowToml( "surface_cells", flux ) +
+                               "length_m = " + mpm_test::tomlNumber( width ) +
+                               "\n";
+    const auto w = balanceOf<TypeParam>(
+        "rain on points", column( -5000.0, "drained", duration, inflow ) );
     EXPECT_LT(
         mpm_test::relativeDifference( w.point_inflow, flux * width * duration ),
         1.0e-12 );
@@ -134,10 +124,8 @@ TYPED_TEST( WaterBalance, held_surface_points_supply_the_water )
 {
     const std::string held = "[[stages.pore_pressures]]\n"
                              "where = \"surface_cells\"\npressure_pa = 0.0\n";
-    const auto summary =
-        run<TypeParam>( column( -5000.0, "impermeable", 1.0, held ) );
-    const auto& w = summary.water;
-    print( "held surface", w );
+    const auto w = balanceOf<TypeParam>(
+        "held surface", column( -5000.0, "impermeable", 1.0, held ) );
     EXPECT_GT( w.prescribed, 1.0 * w.stored_start );
     EXPECT_LT( std::fabs( w.flow_in ), 3.0e-4 * w.stored_start );
     EXPECT_LT( w.relativeClosureError(), 3.0e-6 );
@@ -149,15 +137,9 @@ TYPED_TEST( WaterBalance, edge_inflow_enters_as_seepage )
 {
     const double duration = 1.0;
     const double flux = 0.5 * K_s;
-    char inflow[128];
-    std::snprintf( inflow, sizeof inflow,
-                   "[[stages.inflows]]\nwhere = \"top\"\n"
-                   "flux_m_per_s = %.17g\n",
-                   flux );
-    const auto summary =
-        run<TypeParam>( column( -5000.0, "impermeable", duration, inflow ) );
-    const auto& w = summary.water;
-    print( "edge inflow", w );
+    const auto w = balanceOf<TypeParam>(
+        "edge inflow",
+        column( -5000.0, "impermeable", duration, inflowToml( "top", flux ) ) );
     EXPECT_LT(
         mpm_test::relativeDifference( w.flow_in, flux * width * duration ),
         3.0e-4 );
