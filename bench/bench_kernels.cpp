@@ -145,12 +145,7 @@ void BM_step( benchmark::State& state )
 //! Sizes (cells across the block height) and reporting of every benchmark.
 void kernelSizes( benchmark::internal::Benchmark* b )
 {
-    b->ArgName( "cells_high" )
-        ->Arg( 21 )
-        ->Arg( 65 )
-        ->Arg( 206 )
-        ->Unit( benchmark::kMicrosecond )
-        ->UseRealTime();
+    mpm_bench::blockSizes( b, { 21, 65, 206 } );
 }
 void stepSizes( benchmark::internal::Benchmark* b )
 {

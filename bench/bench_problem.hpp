@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,17 @@ constexpr double preload_time_s = 0.03;
 
 //! The case of the soil block with n cells across its height.
 mpm::CaseConfig soilBlockCase( const int n );
+
+//! Runs benchmark b at the block sizes `cells_high` (cells across the
+//! block's height), in microseconds of real time.
+inline void blockSizes( benchmark::internal::Benchmark* b,
+                        std::initializer_list<int> cells_high )
+{
+    b->ArgName( "cells_high" );
+    for ( const int n : cells_high )
+        b->Arg( n );
+    b->Unit( benchmark::kMicrosecond )->UseRealTime();
+}
 
 //! Registers benchmark `run` under `name`, with the sizes and reporting
 //! that `apply` sets.

@@ -114,45 +114,16 @@ void BM_caseSteps( benchmark::State& state, const mpm::CaseConfig& config,
     state.counters["kinetic_energy_j"] = kinetic_energy;
 }
 
-template <class ExecSpace>
-void BM_sceneStep( benchmark::State& state, const mpm::AnalysisType analysis )
+/*!
+  \brief One step of the block as a scene of kind `analysis`: Simulation::
+  advance (run_stage false) or a step of runStages (run_stage true).
+*/
+template <class ExecSpace, mpm::AnalysisType analysis, bool run_stage>
+void BM_sceneStep( benchmark::State& state )
 {
     BM_caseSteps<ExecSpace>(
         state, sceneCase( static_cast<int>( state.range( 0 ) ), analysis ),
-        false );
-}
-
-template <class ExecSpace>
-void BM_stepDry( benchmark::State& state )
-{
-    BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Dry );
-}
-template <class ExecSpace>
-void BM_stepSaturated( benchmark::State& state )
-{
-    BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Saturated );
-}
-template <class ExecSpace>
-void BM_stepUnsaturated( benchmark::State& state )
-{
-    BM_sceneStep<ExecSpace>( state, mpm::AnalysisType::Unsaturated );
-}
-
-template <class ExecSpace>
-void BM_runStepDry( benchmark::State& state )
-{
-    BM_caseSteps<ExecSpace>( state,
-                             sceneCase( static_cast<int>( state.range( 0 ) ),
-                                        mpm::AnalysisType::Dry ),
-                             true );
-}
-template <class ExecSpace>
-void BM_runStepUnsaturated( benchmark::State& state )
-{
-    BM_caseSteps<ExecSpace>( state,
-                             sceneCase( static_cast<int>( state.range( 0 ) ),
-                                        mpm::AnalysisType::Unsaturated ),
-                             true );
+        run_stage );
 }
 
 template <class ExecSpace>
@@ -171,18 +142,13 @@ void BM_runSlopeUnsaturated( benchmark::State& state )
 // (the simulation scatters with duplication on OpenMP).
 void sceneSizes( benchmark::internal::Benchmark* b )
 {
-    b->ArgName( "cells_high" )
-        ->Arg( 21 )
-        ->Arg( 65 )
-        ->Unit( benchmark::kMicrosecond )
-        ->UseRealTime();
+    mpm_bench::blockSizes( b, { 21, 65 } );
 }
 
 // ... and the size of the stand-in's refine 10 (bench/standin_ratio.sh).
 void threeSceneSizes( benchmark::internal::Benchmark* b )
 {
-    sceneSizes( b );
-    b->Arg( 206 );
+    mpm_bench::blockSizes( b, { 21, 65, 206 } );
 }
 
 void slopeReport( benchmark::internal::Benchmark* b )
@@ -195,14 +161,17 @@ template <class Space>
 bool addScenes( const std::string& tag )
 {
     using mpm_bench::addBenchmark;
-    addBenchmark( "step_dry/" + tag, BM_stepDry<Space>, sceneSizes );
-    addBenchmark( "step_saturated/" + tag, BM_stepSaturated<Space>,
+    using A = mpm::AnalysisType;
+    addBenchmark( "step_dry/" + tag, BM_sceneStep<Space, A::Dry, false>,
                   sceneSizes );
-    addBenchmark( "step_unsaturated/" + tag, BM_stepUnsaturated<Space>,
+    addBenchmark( "step_saturated/" + tag,
+                  BM_sceneStep<Space, A::Saturated, false>, sceneSizes );
+    addBenchmark( "step_unsaturated/" + tag,
+                  BM_sceneStep<Space, A::Unsaturated, false>, sceneSizes );
+    addBenchmark( "run_step_dry/" + tag, BM_sceneStep<Space, A::Dry, true>,
                   sceneSizes );
-    addBenchmark( "run_step_dry/" + tag, BM_runStepDry<Space>, sceneSizes );
-    addBenchmark( "run_step_unsaturated/" + tag, BM_runStepUnsaturated<Space>,
-                  threeSceneSizes );
+    addBenchmark( "run_step_unsaturated/" + tag,
+                  BM_sceneStep<Space, A::Unsaturated, true>, threeSceneSizes );
     addBenchmark( "run_slope_dry/" + tag, BM_runSlopeDry<Space>, slopeReport );
     addBenchmark( "run_slope_unsaturated/" + tag, BM_runSlopeUnsaturated<Space>,
                   slopeReport );

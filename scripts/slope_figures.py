@@ -376,7 +376,8 @@ def main(argv=None):
                                                  "percentile of |sigma_xy|, rounded up to 5 kPa)")
     sm.add_options(p)
     args = p.parse_args(argv)
-    try:
+
+    def body():
         toe, opts = sm.options_from(args)
         pw_range = tuple(parse_floats(args.pw_range, "--pw-range", 2))
         run = sm.Run(args.dir, args.stage)
@@ -399,13 +400,8 @@ def main(argv=None):
                 print(f"slope_figures: note: {probes} not found; fig9 (v_w/K at the probes) skipped")
         finally:
             run.close()
-    except sm.InputError as e:
-        print(f"slope_figures: error: {e}", file=sys.stderr)
-        return 2
-    except OSError as e:  # h5py read errors of a damaged file
-        print(f"slope_figures: error: cannot read the results ({e})", file=sys.stderr)
-        return 2
-    return 0
+
+    return sm.run_reporting_errors("slope_figures", body)
 
 
 if __name__ == "__main__":

@@ -66,6 +66,22 @@ class InputError(Exception):
     """A missing or unusable input; the message names the file and what is missing."""
 
 
+def run_reporting_errors(script, body, results=""):
+    """Runs body() and returns its exit code (0 if it returns None). A missing or
+    unusable input (InputError) or an unreadable result file (OSError, e.g. h5py on
+    a damaged file; `results` names it) is printed as '<script>: error: ...' and
+    gives 2."""
+    try:
+        code = body()
+    except InputError as e:
+        print(f"{script}: error: {e}", file=sys.stderr)
+        return 2
+    except OSError as e:  # h5py read errors of a damaged file
+        print(f"{script}: error: {results}cannot read the results ({e})", file=sys.stderr)
+        return 2
+    return 0 if code is None else code
+
+
 def _text(value):
     """An HDF5 string attribute (bytes or str) as str."""
     if isinstance(value, (bytes, np.bytes_)):
@@ -795,7 +811,8 @@ def main(argv=None):
     add_options(p)
     args = p.parse_args(argv)
     signal.signal(signal.SIGPIPE, signal.SIG_DFL)
-    try:
+
+    def body():
         toe, opts = options_from(args)
         run = Run(args.dir, args.stage, metrics_required=not args.no_write)
         try:
@@ -804,20 +821,14 @@ def main(argv=None):
             run.close()
         if not args.no_write:
             write_metrics_key(args.dir, "slope", result)
-    except InputError as e:
-        print(f"slope_metrics: error: {e}", file=sys.stderr)
-        return 2
-    except OSError as e:  # h5py read errors of a damaged file
-        print(f"slope_metrics: error: {args.dir}: cannot read the results ({e})", file=sys.stderr)
-        return 2
-    if args.json:
-        print(json.dumps(result, indent=2, allow_nan=False))
-    else:
-        print("\n".join(summary_lines(result)))
-        if not args.no_write:
-            print(f"written under \"slope\" in {os.path.join(args.dir, METRICS)}")
-    return 0
+        if args.json:
+            print(json.dumps(result, indent=2, allow_nan=False))
+        else:
+            print("\n".join(summary_lines(result)))
+            if not args.no_write:
+                print(f"written under \"slope\" in {os.path.join(args.dir, METRICS)}")
 
+    return run_reporting_errors("slope_metrics", body, f"{args.dir}: ")
 
 if __name__ == "__main__":
     sys.exit(main())

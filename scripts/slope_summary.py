@@ -82,7 +82,8 @@ def main(argv=None):
                    help="analyse particles.h5 even where metrics.json has a 'slope' key")
     sm.add_options(p)
     args = p.parse_args(argv)
-    try:
+
+    def body():
         toe, opts = sm.options_from(args)
         cases = [case_series(d, args.recompute, args.stage, toe, opts) for d in args.dirs]
         import matplotlib
@@ -126,14 +127,9 @@ def main(argv=None):
                     for (label, slope), d in zip(cases, args.dirs)]
             with open(args.table, "w") as f:
                 f.write(TABLE_HEADER + "\n".join(rows) + "\n")
-    except sm.InputError as e:
-        print(f"slope_summary: error: {e}", file=sys.stderr)
-        return 2
-    except OSError as e:  # h5py read errors of a damaged file
-        print(f"slope_summary: error: cannot read the results ({e})", file=sys.stderr)
-        return 2
-    print(f"wrote {args.out} ({os.path.getsize(args.out) / 1024:.0f} kB)")
-    return 0
+        print(f"wrote {args.out} ({os.path.getsize(args.out) / 1024:.0f} kB)")
+
+    return sm.run_reporting_errors("slope_summary", body)
 
 
 if __name__ == "__main__":

@@ -261,12 +261,10 @@ std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
                                                       const std::string& prefix,
                                                       Diagnostics& diag )
 {
-    std::vector<PorePressureCondition> result;
-    forEachTableOf(
+    return readTablesOf<PorePressureCondition>(
         "[[stages.pore_pressures]]", array, prefix, diag,
-        [&]( TableReader& r )
+        [&]( TableReader& r, PorePressureCondition& condition )
         {
-            PorePressureCondition condition;
             condition.points = readSelection( r, false );
             const toml::node* hold = r.find( "hold" );
             condition.hold_initial =
@@ -289,21 +287,17 @@ std::vector<PorePressureCondition> readPorePressures( const toml::array& array,
                     "is its value at the stage start" );
             else
                 condition.time_function = readTimeFunction( r );
-            result.push_back( condition );
         } );
-    return result;
 }
 
 //---------------------------------------------------------------------------//
 std::vector<PointLoad> readLoads( const toml::array& array,
                                   const std::string& prefix, Diagnostics& diag )
 {
-    std::vector<PointLoad> result;
-    forEachTableOf(
+    return readTablesOf<PointLoad>(
         "[[stages.loads]]", array, prefix, diag,
-        [&]( TableReader& r )
+        [&]( TableReader& r, PointLoad& load )
         {
-            PointLoad load;
             load.points = readSelection( r, false );
             load.traction_pa = r.point( "traction_pa", "Pa", Need::Required )
                                    .value_or( load.traction_pa );
@@ -312,9 +306,7 @@ std::vector<PointLoad> readLoads( const toml::array& array,
                           "m (the loaded boundary length)", Need::Required )
                     .value_or( load.length_m );
             load.time_function = readTimeFunction( r );
-            result.push_back( load );
         } );
-    return result;
 }
 
 //---------------------------------------------------------------------------//

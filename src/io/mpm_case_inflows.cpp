@@ -94,12 +94,10 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                                       const GridConfig* grid,
                                       Diagnostics& diag )
 {
-    std::vector<WaterInflow> result;
-    forEachTableOf(
+    return readTablesOf<WaterInflow>(
         "[[stages.inflows]]", array, prefix, diag,
-        [&]( TableReader& r )
+        [&]( TableReader& r, WaterInflow& inflow )
         {
-            WaterInflow inflow;
             inflow.points = readSelection( r, true );
             inflow.flux_m_per_s =
                 r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
@@ -154,9 +152,7 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
             inflow.time_function = readTimeFunction( r );
             inflow.ponding = r.boolean( "ponding", Need::Optional )
                                  .value_or( inflow.ponding );
-            result.push_back( inflow );
         } );
-    return result;
 }
 
 } // namespace Impl

@@ -44,6 +44,24 @@ void forEachTableOf( const std::string& table, const toml::array& array,
     forEachTable( array, prefix, diag, keysOf( table ), table, read );
 }
 
+//! The items read(r, item) reads from an array of the tables `table`
+//! (forEachTableOf), one default-constructed T per table.
+template <class T, class Read>
+std::vector<T> readTablesOf( const std::string& table, const toml::array& array,
+                             const std::string& prefix, Diagnostics& diag,
+                             Read&& read )
+{
+    std::vector<T> items;
+    forEachTableOf( table, array, prefix, diag,
+                    [&]( TableReader& r )
+                    {
+                        T item;
+                        read( r, item );
+                        items.push_back( item );
+                    } );
+    return items;
+}
+
 } // namespace Impl
 } // namespace mpm
 

@@ -19,6 +19,24 @@ std::string pointText( const Point2& p )
     return "(" + formatNumber( p[0] ) + ", " + formatNumber( p[1] ) + ")";
 }
 
+// Reports the first of the vertices (the array `arr` at `path`) that lies
+// outside the grid.
+void checkVerticesInGrid( const toml::array& arr,
+                          const std::vector<Point2>& vertices,
+                          const std::string& path, const GridConfig& grid,
+                          Diagnostics& diag )
+{
+    for ( std::size_t k = 0; k < vertices.size(); ++k )
+    {
+        const std::string outside = outsideGridText( grid, vertices[k] );
+        if ( outside.empty() )
+            continue;
+        diag.keyError( *arr.get( k ), indexed( path, k ),
+                       "expected a vertex " + outside );
+        return;
+    }
+}
+
 } // namespace
 
 //---------------------------------------------------------------------------//
@@ -72,17 +90,8 @@ void checkBodyPolygon( std::vector<Point2>& polygon, const toml::node& node,
     }
 
     // Every vertex inside the grid (up to round-off).
-    if ( !grid )
-        return;
-    for ( std::size_t k = 0; k < n; ++k )
-    {
-        const std::string outside = outsideGridText( *grid, polygon[k] );
-        if ( outside.empty() )
-            continue;
-        diag.keyError( *arr.get( k ), indexed( path, k ),
-                       "expected a vertex " + outside );
-        return;
-    }
+    if ( grid )
+        checkVerticesInGrid( arr, polygon, path, *grid, diag );
 }
 
 //---------------------------------------------------------------------------//
@@ -180,17 +189,8 @@ void checkWallPolyline( const std::vector<Point2>& line, const toml::node& node,
                                "must differ" );
             return;
         }
-    if ( !grid )
-        return;
-    for ( std::size_t k = 0; k < line.size(); ++k )
-    {
-        const std::string outside = outsideGridText( *grid, line[k] );
-        if ( outside.empty() )
-            continue;
-        diag.keyError( *arr.get( k ), indexed( path, k ),
-                       "expected a vertex " + outside );
-        return;
-    }
+    if ( grid )
+        checkVerticesInGrid( arr, line, path, *grid, diag );
 }
 
 } // namespace Impl

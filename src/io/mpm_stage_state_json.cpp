@@ -41,23 +41,20 @@ std::string member( const std::string& path, const std::string& key )
 // What a value of the type of `shape` is called in messages.
 const char* expected( const json& shape )
 {
-    switch ( shape.type() )
-    {
-    case json::value_t::number_float:
-        return "a number (or \"nan\", \"inf\", \"-inf\")";
-    case json::value_t::number_integer:
-        return "an integer";
-    case json::value_t::number_unsigned:
-        return "a non-negative integer";
-    case json::value_t::boolean:
-        return "true or false";
-    case json::value_t::string:
-        return "a string";
-    case json::value_t::array:
-        return "an array";
-    default:
-        return "an object";
-    }
+    // A list, not a std::map: nlohmann's operator< on value_t ranks the
+    // three number types equal.
+    using T = json::value_t;
+    static const std::pair<T, const char*> names[] = {
+        { T::number_float, "a number (or \"nan\", \"inf\", \"-inf\")" },
+        { T::number_integer, "an integer" },
+        { T::number_unsigned, "a non-negative integer" },
+        { T::boolean, "true or false" },
+        { T::string, "a string" },
+        { T::array, "an array" } };
+    for ( const auto& [type, name] : names )
+        if ( type == shape.type() )
+            return name;
+    return "an object";
 }
 
 // What `j` is, for messages: its type and, if not structured, its value.

@@ -9,24 +9,13 @@ physics::RetentionParams retentionParams( const RetentionConfig& config,
                                           const double water_unit_weight )
 {
     physics::RetentionParams r;
-    switch ( config.model )
-    {
-    case RetentionType::Saturated:
-        r.model = physics::RetentionModel::Saturated;
-        break;
-    case RetentionType::VanGenuchten:
-        r.model = physics::RetentionModel::VanGenuchten;
-        break;
-    case RetentionType::Liakopoulos:
-        r.model = physics::RetentionModel::Liakopoulos;
-        break;
-    case RetentionType::Gardner:
-        r.model = physics::RetentionModel::Gardner;
-        break;
-    case RetentionType::Linear:
-        r.model = physics::RetentionModel::Linear;
-        break;
-    }
+    // The model of each RetentionType, in the order of its values.
+    static const physics::RetentionModel models[] = {
+        physics::RetentionModel::Saturated,
+        physics::RetentionModel::VanGenuchten,
+        physics::RetentionModel::Liakopoulos, physics::RetentionModel::Gardner,
+        physics::RetentionModel::Linear };
+    r.model = models[static_cast<int>( config.model )];
     r.s_res = config.residual_saturation;
     r.s_sat = config.saturated_saturation;
     r.alpha_per_pa = config.alpha_per_pa;

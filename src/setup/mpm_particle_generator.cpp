@@ -151,33 +151,21 @@ std::vector<int> nodeFlags( const GridConfig& grid,
         for ( int i = 0; i < nx1; ++i )
             for ( int j = 0; j < ny1; ++j )
             {
-                bool selected = false;
-                switch ( bc.where )
-                {
-                case BoundarySelector::Left:
-                    selected = i == 0;
-                    break;
-                case BoundarySelector::Right:
-                    selected = i == nx1 - 1;
-                    break;
-                case BoundarySelector::Bottom:
-                    selected = j == 0;
-                    break;
-                case BoundarySelector::Top:
-                    selected = j == ny1 - 1;
-                    break;
-                case BoundarySelector::BelowPolyline:
+                const auto belowPolyline = [&]()
                 {
                     const double x = grid.origin_m[0] + i * h;
                     const double y = grid.origin_m[1] + j * h;
-                    selected = y <= geometry::polylineY( bc.polyline_m, x ) +
-                                        tolerance;
-                    break;
-                }
-                case BoundarySelector::Polyline:
-                    selected = wall[i * ny1 + j] != 0;
-                    break;
-                }
+                    return y <=
+                           geometry::polylineY( bc.polyline_m, x ) + tolerance;
+                };
+                using B = BoundarySelector;
+                const bool selected = bc.where == B::Left     ? i == 0
+                                      : bc.where == B::Right  ? i == nx1 - 1
+                                      : bc.where == B::Bottom ? j == 0
+                                      : bc.where == B::Top    ? j == ny1 - 1
+                                      : bc.where == B::Polyline
+                                          ? wall[i * ny1 + j] != 0
+                                          : belowPolyline();
                 if ( selected )
                     flags[i * ny1 + j] |= flag;
             }
