@@ -52,9 +52,7 @@ mpm::CaseConfig sceneCase( const int n, const mpm::AnalysisType analysis )
 //! A case of cases/ (empty name if the file cannot be read).
 mpm::CaseConfig projectCase( const std::string& file )
 {
-    const std::string source = __FILE__;
-    const std::string cases =
-        source.substr( 0, source.rfind( '/' ) ) + "/../cases/";
+    const std::string cases = RAINSLIDE_CASES_DIR "/";
     try
     {
         return mpm::readCaseFile( cases + file );
