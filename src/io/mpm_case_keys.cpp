@@ -9,25 +9,12 @@ namespace mpm
 {
 namespace Impl
 {
-namespace
-{
-//! The names of a declared key list (solverKeys, waterKeys).
-template <class Config>
-std::vector<std::string> namesOf( const std::vector<ConfigKey<Config>>& keys )
-{
-    std::vector<std::string> names;
-    for ( const auto& key : keys )
-        names.push_back( key.name );
-    return names;
-}
-} // namespace
-
 //---------------------------------------------------------------------------//
 const std::vector<CaseTableKeys>& caseTableKeys()
 {
     static const std::vector<CaseTableKeys> tables = {
         { "[case]", { "name", "description", "analysis" } },
-        { "[water]", namesOf( waterKeys() ) },
+        { "[water]", keyNames( waterKeys() ) },
         { "[grid]", { "origin_m", "cell_size_m", "cells" } },
         { "[particles]", { "points_per_cell" } },
         { "[[materials]]", materialKeys() },
@@ -38,7 +25,7 @@ const std::vector<CaseTableKeys>& caseTableKeys()
             "initial_pore_pressure_profile" } },
         { "[[boundaries]]",
           { "where", "condition", "hydraulic", "polyline_m" } },
-        { "[solver]", namesOf( solverKeys() ) },
+        { "[solver]", keyNames( solverKeys() ) },
         { "[[stages]]",
           { "name", "type", "gravity_m_per_s2", "damping", "duration_s",
             "ke_ratio_tolerance", "snapshot_interval_s", "snapshot_times_s",

@@ -46,16 +46,23 @@ ConfigKey<Config> flagKey( const char* name, bool Config::*member )
     return { name, nullptr, member, Range::any(), "" };
 }
 
+//! The names of the declared keys, in their order.
+template <class Config>
+std::vector<std::string> keyNames( const std::vector<ConfigKey<Config>>& keys )
+{
+    std::vector<std::string> names;
+    for ( const auto& key : keys )
+        names.push_back( key.name );
+    return names;
+}
+
 //! Reads the keys of table `r` (described as `where` in messages) into
 //! `config`; keys left out keep their values, unknown keys are errors.
 template <class Config>
 void readConfigKeys( TableReader& r, const std::vector<ConfigKey<Config>>& keys,
                      const std::string& where, Config& config )
 {
-    std::vector<std::string> names;
-    for ( const auto& key : keys )
-        names.push_back( key.name );
-    r.checkKeys( names, where );
+    r.checkKeys( keyNames( keys ), where );
     for ( const auto& key : keys )
         if ( key.number )
             config.*key.number =
