@@ -1,6 +1,6 @@
 // Kernel and step benchmarks of the dry MUSL step on the soil block
-// (bench_problem.hpp): the kernels Simulation::advanceDry runs. Names:
-// <kernel>/<backend>/<scatter>/cells_high:<n>, scatter = plain (Serial),
+// (bench_problem.hpp): the kernels Simulation::advanceStep<DryScene> runs.
+// Names: <kernel>/<backend>/<scatter>/cells_high:<n>, scatter = plain (Serial),
 // duplicated, atomic (OpenMP non-duplicated) or none (no scatter). Rates
 // are material-point updates/s.
 

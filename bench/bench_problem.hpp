@@ -134,8 +134,9 @@ void loadView( const std::vector<T>& values, const ViewType& view )
 /*!
   \brief The block problem on ExecSpace in its prepared state, with the
   phases of the dry MUSL step callable one by one: the kernels
-  Simulation::advanceDry runs, in its order, on sums of their own (B-bar
-  off, as in the block case), to set up the input of the kernel under test.
+  Simulation::advanceStep<DryScene> runs, in its order, on sums of their own
+  (B-bar off, as in the block case), to set up the input of the kernel under
+  test.
 */
 template <class ExecSpace>
 class BlockProblem
@@ -170,8 +171,8 @@ class BlockProblem
 
     double dt() const { return prepared.dt; }
 
-    //! The phases of the dry step as Simulation::advanceDry runs them
-    //! (mpm::DryStepPhases), with the stage's settings; `step` holds the
+    //! The phases of the dry step as Simulation::advanceStep<DryScene> runs
+    //! them (mpm::DryStepPhases), with the stage's settings; `step` holds the
     //! sums (its scatter strategy).
     template <class Phases>
     void scatter( const Phases& step )

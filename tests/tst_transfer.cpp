@@ -16,7 +16,7 @@ namespace
 {
 MPM_TEST_BACKEND_SUITE( Transfer );
 
-// The dry step's phases as Simulation::advanceDry runs them
+// The dry step's phases as Simulation::advanceStep<DryScene> runs them
 // (mpm::DryStepPhases: the P2G scatter into sums kept between steps, the
 // grid update that takes them, G2P with the remap scatter, the remap, the
 // last point loop), on the test's points, grid and material.

@@ -16,7 +16,7 @@ namespace mpm
 //---------------------------------------------------------------------------//
 /*!
   \brief The phases of the dry MUSL step (docs/formulation.md §4) with the
-  nodal sums they keep between steps. Simulation::advanceDry runs them in
+  nodal sums they keep between steps. Simulation::advanceStep runs them in
   order; the transfer tests and the benchmarks run the same phases
   (Duplication: the scatter strategy, default as the simulation's).
 */

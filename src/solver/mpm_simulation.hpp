@@ -19,8 +19,8 @@
 #include <mpm_water_content.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_kinematics.hpp>
-#include <setup/mpm_base_slivers.hpp>
 #include <setup/mpm_retention_tables.hpp>
+#include <setup/mpm_stage_flags.hpp>
 #include <solver/mpm_diagnosis.hpp>
 #include <solver/mpm_dry_step.hpp>
 #include <solver/mpm_host_transfer.hpp>
@@ -32,6 +32,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm
@@ -123,30 +124,17 @@ class Simulation
         materials = makeMaterialTable( stage.materials );
         if ( analysis == AnalysisType::Unsaturated && solver.retention_table )
             _retention_tables.attach( materials );
-        // Interior walls are added after fixBaseSlivers: the empty cells
-        // beside a wall are no soil sliver (they would all be fixed).
-        std::vector<int> flags =
-            nodeFlags( grid_config, interiorWalls( stage.boundaries, false ) );
-        std::vector<int> water_flags;
-        if ( twoPhase() )
-            water_flags = waterNodeFlags( grid_config, stage.boundaries );
         // Two-phase only for now: the dry step has no completion either.
-        // (A restart re-applies the stage before it restores the flags:
-        // the slivers it finds then do not matter.)
         const bool complete = solver.base_cell_completion && twoPhase();
-        _cut_cells = complete ? cutBaseCells( grid_config, stage.boundaries )
-                              : std::vector<int>();
-        if ( complete )
-            fixBaseSlivers( grid.geometry, activePointPositions( particles ),
-                            _cut_cells, flags, &water_flags );
-        const std::vector<int> walls =
-            nodeFlags( grid_config, interiorWalls( stage.boundaries, true ) );
-        for ( std::size_t n = 0; n < flags.size(); ++n )
-            flags[n] |= walls[n];
-        copyNodeFlags( grid.geometry, flags, grid.flags_i );
+        StageNodeFlags flags = stageNodeFlags(
+            grid_config, grid.geometry, stage, twoPhase(), complete,
+            complete ? activePointPositions( particles )
+                     : std::vector<double>() );
+        _cut_cells = std::move( flags.cut_cells );
+        copyNodeFlags( grid.geometry, flags.solid, grid.flags_i );
         flagsRestored();
         if ( twoPhase() )
-            copyNodeFlags( grid.geometry, water_flags, water_grid.flags_w_i );
+            copyNodeFlags( grid.geometry, flags.water, water_grid.flags_w_i );
         conditions.apply( stage, particles, water_particles, grid_config );
     }
 
@@ -177,9 +165,9 @@ class Simulation
                   const double stage_time_s = 0.0 )
     {
         conditions.update( stage_time_s + dt );
-        const PointUpdateReport report = twoPhase()
-                                             ? advanceTwoPhase( dt, settings )
-                                             : advanceDry( dt, settings );
+        const PointUpdateReport report =
+            twoPhase() ? advanceStep<TwoPhaseScene>( dt, settings )
+                       : advanceStep<DryScene>( dt, settings );
         num_removed += report.num_removed;
         time += dt;
         ++step;
@@ -314,103 +302,125 @@ class Simulation
         takeCellSums( exec, grid, water_grid, _cell_sums );
     }
 
-    //! Single phase: P2G, grid update, G2P with the remap scatter, remap,
-    //! (B-bar cell averages,) gradient, stress and positions.
-    PointUpdateReport advanceDry( const double dt,
-                                  const StepSettings& settings )
+    //! The scene formulations of the step (advanceStep): which kernels
+    //! each phase runs.
+    struct DryScene
     {
-        const ExecSpace exec;
-        _dry_step.scatter( exec, particles, grid.geometry, settings.gravity_x,
-                           settings.gravity_y, conditions.load_force );
-        _dry_step.updateGrid( exec, grid, dt, settings.damping,
-                              solver.inertia_scaling );
-        _dry_step.gatherAndRemap( exec, particles, grid, dt,
-                                  stepFlipFraction( dt ) );
-        if ( solver.bbar )
-            cellAverages( exec );
-        return _dry_step.updatePoints( exec, particles, grid, materials, dt,
-                                       solver.bbar,
-                                       solver.remove_points_leaving_grid );
-    }
+        static constexpr bool two_phase = false;
+    };
+    struct TwoPhaseScene
+    {
+        static constexpr bool two_phase = true;
+    };
 
     /*!
-      \brief The two-phase step, in the order of docs/formulation.md §3
-      (the paper's §2.6), each phase one kernel whose body is a physics
-      functor; the step numbers are those of docs/formulation.md.
+      \brief The explicit MUSL step, in the order of docs/formulation.md §3
+      (the paper's §2.6; a dry scene: §4, the same phases on one phase).
+      Each phase is one kernel whose body is a physics functor; `Scene`
+      picks the dry or the two-phase kernel of each phase. The step numbers
+      are those of docs/formulation.md.
     */
-    PointUpdateReport advanceTwoPhase( const double dt,
-                                       const StepSettings& settings )
+    template <class Scene>
+    PointUpdateReport advanceStep( const double dt,
+                                   const StepSettings& settings )
     {
         const ExecSpace exec;
         const BaseCellAccess<ExecSpace> base( _base_cells, grid.geometry );
         const bool saturated = analysis == AnalysisType::Saturated;
 
-        // 1. P2G: masses, momenta, the mixture force with Bishop's total
-        // stress (Eq. 11) and the water force of Eq. 9 (1b: the share of
-        // the empty parts of cells cut by the base).
-        scatterTwoPhase( exec, particles, water_particles, grid.geometry,
-                         materials, water, settings.gravity_x,
-                         settings.gravity_y, conditions.load_force,
-                         _two_phase_sums, base );
-        baseCellForces( exec, _base_cells, grid.geometry, settings.gravity_x,
-                        settings.gravity_y, water.density );
+        // 1. P2G: masses, momenta and forces; two-phase: the mixture force
+        // with Bishop's total stress (Eq. 11) and the water force of Eq. 9
+        // (1b: the share of the empty parts of cells cut by the base).
+        if constexpr ( Scene::two_phase )
+        {
+            scatterTwoPhase( exec, particles, water_particles, grid.geometry,
+                             materials, water, settings.gravity_x,
+                             settings.gravity_y, conditions.load_force,
+                             _two_phase_sums, base );
+            baseCellForces( exec, _base_cells, grid.geometry,
+                            settings.gravity_x, settings.gravity_y,
+                            water.density );
+        }
+        else
+            _dry_step.scatter( exec, particles, grid.geometry,
+                               settings.gravity_x, settings.gravity_y,
+                               conditions.load_force );
 
-        // 2. Nodal velocities of both phases, drag implicit (Eqs. 9-10).
-        gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
-                            settings.damping, water.density, water.viscosity,
-                            solver.inertia_scaling, base,
-                            conditions.inflow_flux_i );
+        // 2. Nodal velocities; two-phase: both phases, the drag implicit
+        // (Eqs. 9-10).
+        if constexpr ( Scene::two_phase )
+            gridUpdateTwoPhase( exec, grid, water_grid, _two_phase_sums, dt,
+                                settings.damping, water.density,
+                                water.viscosity, solver.inertia_scaling, base,
+                                conditions.inflow_flux_i );
+        else
+            _dry_step.updateGrid( exec, grid, dt, settings.damping,
+                                  solver.inertia_scaling );
 
         // 3. G2P: point velocities (FLIP/PIC) and displacement increments;
-        // 4. the MUSL remap of both phases (4b: the base cells' water).
-        g2pVelocityRemapTwoPhase( exec, particles, water_particles, grid,
-                                  water_grid, dt, stepFlipFraction( dt ),
-                                  solver.water_relative_flip, materials, water,
-                                  solver.inertia_scaling, _two_phase_momentum );
-        remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum,
-                               conditions.inflow_flux_i, water.density );
-        baseCellRates( exec, _base_cells, grid, water_grid, water.density );
+        // 4. the MUSL remap (two-phase: of both phases; 4b: the base
+        // cells' water).
+        if constexpr ( Scene::two_phase )
+        {
+            g2pVelocityRemapTwoPhase(
+                exec, particles, water_particles, grid, water_grid, dt,
+                stepFlipFraction( dt ), solver.water_relative_flip, materials,
+                water, solver.inertia_scaling, _two_phase_momentum );
+            remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum,
+                                   conditions.inflow_flux_i, water.density );
+            baseCellRates( exec, _base_cells, grid, water_grid, water.density );
+        }
+        else
+            _dry_step.gatherAndRemap( exec, particles, grid, dt,
+                                      stepFlipFraction( dt ) );
 
-        // 5. Velocity gradients and water divergence: with B-bar, their
-        // cell averages first.
+        // 5. Velocity gradients (two-phase: and the water divergence):
+        // with B-bar, their cell averages first.
         if ( solver.bbar )
             cellAverages( exec );
 
-        // 5-9 in one point loop (StepVelocityGradient, then
-        // PorePressurePointUpdate: Eq. 8 pore pressure, Eq. 2 porosity, the
-        // retention state; then StressPointUpdate: the effective stress),
-        // the positions, and the diagnostics of the new state (10: the
-        // CFL limit of the next step, unless 6b reduces it).
-        const auto pore_pressure = porePressurePointUpdate(
-            particles, water_particles, water, dt, saturated,
-            _retention_current, conditions.prescribed_p_w,
-            conditions.prescribed_hold, conditions.inflow_rate,
-            conditions.inflow_ponding );
-        PointUpdateReport report = updatePointsTwoPhase(
-            exec, particles, water_particles, grid, water_grid, materials,
-            water, dt, solver.bbar, solver.remove_points_leaving_grid,
-            pore_pressure, base, !solver.cell_equilibrium );
-
-        // 6b. Cell water equilibrium. It changes S after the point loop, so
-        // it reduces the CFL limit of the new state itself (a separate
-        // reduction if it did not list every active point).
-        if ( solver.cell_equilibrium )
+        // 5-9 in one point loop: the gradient (StepVelocityGradient);
+        // two-phase: PorePressurePointUpdate (the Eq. 8 pore pressure, the
+        // Eq. 2 porosity, the retention state); the effective stress
+        // (StressPointUpdate); the positions; the diagnostics of the new
+        // state (10: the CFL limit of the next step, unless 6b reduces it).
+        if constexpr ( !Scene::two_phase )
+            return _dry_step.updatePoints( exec, particles, grid, materials, dt,
+                                           solver.bbar,
+                                           solver.remove_points_leaving_grid );
+        else
         {
-            const CellEquilibriumLimit after = cellWaterEquilibrium(
-                exec, particles, water_particles, grid.geometry, materials,
-                water, saturated, solver.cell_pressure_slope, _cell_lists );
-            const WaveSpeedLimit limit =
-                after.listed == numActivePoints() - report.num_removed
-                    ? after.limit
-                    : criticalTimeStepTwoPhase( exec, particles,
-                                                water_particles, materials,
-                                                water, grid.geometry.h );
-            report.diagnostics.dt_limit = limit.dt_limit;
-            report.diagnostics.max_wave_speed = limit.max_wave_speed;
+            const auto pore_pressure = porePressurePointUpdate(
+                particles, water_particles, water, dt, saturated,
+                _retention_current, conditions.prescribed_p_w,
+                conditions.prescribed_hold, conditions.inflow_rate,
+                conditions.inflow_ponding );
+            PointUpdateReport report = updatePointsTwoPhase(
+                exec, particles, water_particles, grid, water_grid, materials,
+                water, dt, solver.bbar, solver.remove_points_leaving_grid,
+                pore_pressure, base, !solver.cell_equilibrium );
+
+            // 6b. Cell water equilibrium. It changes S after the point
+            // loop, so it reduces the CFL limit of the new state itself (a
+            // separate reduction if it did not list every active point).
+            if ( solver.cell_equilibrium )
+            {
+                const CellEquilibriumLimit after = cellWaterEquilibrium(
+                    exec, particles, water_particles, grid.geometry, materials,
+                    water, saturated, solver.cell_pressure_slope, _cell_lists );
+                const WaveSpeedLimit limit =
+                    after.listed == numActivePoints() - report.num_removed
+                        ? after.limit
+                        : criticalTimeStepTwoPhase( exec, particles,
+                                                    water_particles, materials,
+                                                    water, grid.geometry.h );
+                report.diagnostics.dt_limit = limit.dt_limit;
+                report.diagnostics.max_wave_speed = limit.max_wave_speed;
+            }
+            // S_p and dS_dp_p now hold the retention law at p_w_p.
+            _retention_current = !saturated;
+            return report;
         }
-        // S_p and dS_dp_p now hold the retention law at p_w_p.
-        _retention_current = !saturated;
-        return report;
     }
 
     //! The tabulated retention laws of `materials` (solver.retention_table).
