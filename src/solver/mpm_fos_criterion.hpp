@@ -28,9 +28,9 @@ struct FosCriterion
 {
     double damping = 0.7;
     double periods = 10.0;
-    double growth_ratio = 0.1;
+    double growth_ratio = 0.01;
     double displacement_limit_m = 1.0;
-    double moving_floor_m = 0.01;
+    double moving_floor_m = 0.001;
 
     //! The thresholds (growth ratio, displacement limit, moving floor)
     //! multiplied by `factor`; damping and duration unchanged.
