@@ -224,7 +224,16 @@ int main( int argc, char* argv[] )
     addBudgetOptions( *check, budget );
     addOverrideOption( *check, overrides );
 
-    CLI11_PARSE( app, argc, argv );
+    // A bad option is bad input (exit 2), as a bad case file is; --help 0.
+    try
+    {
+        app.parse( argc, argv );
+    }
+    catch ( const CLI::ParseError& error )
+    {
+        const int code = app.exit( error );
+        return code == 0 ? 0 : exit_bad_input;
+    }
     if ( fos->parsed() &&
          !( fos_options.search.min_factor < fos_options.search.max_factor ) )
     {

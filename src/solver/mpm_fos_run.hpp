@@ -39,6 +39,12 @@ struct FosReport
     std::optional<HostSnapshot> mechanism;
     double mechanism_factor = 0.0;
     double trial_duration_s = 0.0;
+    //! Where the searched state came from: "stages" or the checkpoint's
+    //! path; its simulated time and the stage whose conditions the trials
+    //! keep.
+    std::string state_from = "stages";
+    double state_time_s = 0.0;
+    std::string trial_stage;
 };
 
 //---------------------------------------------------------------------------//
@@ -56,6 +62,8 @@ FosReport searchFos( Simulation<ExecSpace>& sim, const CaseConfig& config,
                                       options.criterion );
     FosReport report;
     report.trial_duration_s = runner.duration();
+    report.state_time_s = sim.time;
+    report.trial_stage = config.stages.at( base_stage ).name;
     const auto trial = [&]( const double factor )
     {
         HostSnapshot end_state;
@@ -98,6 +106,10 @@ inline nlohmann::json fosJson( const CaseConfig& config,
           s.found ? nlohmann::json( s.factor ) : nlohmann::json() },
         { "bracket", { s.stable, s.failing } },
         { "tolerance", options.search.tolerance },
+        { "state",
+          { { "from", report.state_from },
+            { "time_s", report.state_time_s },
+            { "stage", report.trial_stage } } },
         { "criterion",
           { { "text", describeCriterion( options.criterion ) },
             { "damping", options.criterion.damping },
@@ -202,8 +214,10 @@ int runFos( const CaseConfig& config, const RunOptions& run,
             return 1;
         }
     }
-    const FosReport report =
+    FosReport report =
         searchFos( sim, config, base_stage, options, !run.progress );
+    if ( !run.restart_file.empty() )
+        report.state_from = run.restart_file;
     if ( report.mechanism )
     {
         SnapshotWriter writer( run.out_dir, "mechanism" );

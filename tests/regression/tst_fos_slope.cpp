@@ -177,11 +177,45 @@ TEST( FosCli, writes_fos_json_and_the_mechanism )
     EXPECT_TRUE( j.at( "criterion" ).contains( "text" ) );
     EXPECT_DOUBLE_EQ( j.at( "mechanism" ).at( "factor" ).get<double>(),
                       failing );
+    EXPECT_EQ( j.at( "state" ).at( "from" ), "stages" );
+    EXPECT_EQ( j.at( "state" ).at( "stage" ), "gravity" );
     // Only the search's files, inside --out.
     std::vector<std::string> names = mpm_test::listDir( out );
     std::sort( names.begin(), names.end() );
     EXPECT_EQ( names, ( std::vector<std::string>{ "fos.json", "mechanism.h5",
                                                   "mechanism.xdmf" } ) );
+}
+
+// The state of a checkpoint (here 1 s into the gravity stage, which
+// converges at 1.5 s) instead of running the stages.
+TEST( FosCli, searches_from_a_checkpoint )
+{
+    const auto dir = mpm_test::freshTempDir( "fos_cli_restart" );
+    const std::string case_file =
+        std::string( RAINSLIDE_CASES_DIR ) + "/fos_griffiths_lane.toml";
+    auto result = mpm_test::runCommand( mpm_test::runArgs(
+        case_file, dir / "run", " --quiet --checkpoint-every-s 1.0" ) );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    const auto checkpoint = dir / "run" / "checkpoint.h5";
+    result = mpm_test::runCommand(
+        "fos " + case_file + " --restart " + checkpoint.string() + " --out " +
+        ( dir / "fos" ).string() +
+        " --backend serial --quiet --start 1.35 --step 0.05 --tolerance "
+        "0.02" );
+    ASSERT_EQ( result.exit_code, 0 ) << result.output;
+    std::ifstream in( dir / "fos" / "fos.json" );
+    const nlohmann::json j = nlohmann::json::parse( in );
+    EXPECT_EQ( j.at( "state" ).at( "from" ), checkpoint.string() );
+    EXPECT_NEAR( j.at( "state" ).at( "time_s" ).get<double>(), 1.0, 0.01 );
+    EXPECT_NEAR( j.at( "factor_of_safety" ).get<double>(), 1.39, 0.03 );
+    // A checkpoint of another case is refused before any work.
+    const auto other =
+        mpm_test::writeCase( dir, mpm_test::infiniteSlopeCase( false, 0.5 ) );
+    result = mpm_test::runCommand( "fos " + other.string() + " --restart " +
+                                   checkpoint.string() + " --out " +
+                                   ( dir / "other" ).string() );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    EXPECT_FALSE( std::filesystem::exists( dir / "other" / "fos.json" ) );
 }
 
 TEST( FosCli, bad_input_exits_2_before_any_work )
@@ -199,6 +233,13 @@ TEST( FosCli, bad_input_exits_2_before_any_work )
         " --set materials[0].friction_angle_deg=-5" );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
     EXPECT_NE( result.output.find( "friction_angle_deg" ), std::string::npos );
+    result = mpm_test::runCommand( "fos " + case_file + " --out " +
+                                   ( dir / "a" ).string() + " --restart " +
+                                   ( dir / "none.h5" ).string() );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    result = mpm_test::runCommand( "fos " + case_file + " --out " +
+                                   ( dir / "a" ).string() + " --start -1" );
+    EXPECT_EQ( result.exit_code, 2 ) << result.output;
     result = mpm_test::runCommand( "fos " + case_file + " --out /" );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
     EXPECT_FALSE( std::filesystem::exists( dir / "a" ) );
