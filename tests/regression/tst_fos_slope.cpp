@@ -20,19 +20,24 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace
 {
 //! Runs the case's stages on Serial, then searches its factor of safety.
+//! With `before`, the points' state the search starts from.
 mpm::FosReport searchCase( const mpm::CaseConfig& config,
-                           const mpm::FosOptions& options )
+                           const mpm::FosOptions& options,
+                           mpm::HostSnapshot* before = nullptr )
 {
     mpm::Simulation<Kokkos::Serial> sim( config );
     mpm::RunObserver quiet;
     const mpm::RunSummary summary = mpm::runStages( sim, config, quiet );
     EXPECT_TRUE( summary.stages.back().converged );
+    if ( before )
+        *before = mpm::hostSnapshot( sim );
     return mpm::searchFos( sim, config, config.stages.size() - 1, options );
 }
 
@@ -94,11 +99,31 @@ TEST( FosInfiniteSlope, parallel_seepage_matches_the_closed_form )
 {
     const mpm::CaseConfig config = mpm::parseCase(
         mpm_test::infiniteSlopeCase( true, 0.5 ), "infinite_slope_seepage" );
-    const mpm::FosReport r = searchCase( config, startingAt( 1.33, 0.03 ) );
+    mpm::HostSnapshot before;
+    const mpm::FosReport r =
+        searchCase( config, startingAt( 1.33, 0.03 ), &before );
     const double exact = mpm_test::infiniteSlopeFactor( true );
     print( "infinite slope, seepage", r, exact );
     ASSERT_TRUE( r.search.found ) << r.search.status;
     EXPECT_NEAR( r.search.factor / exact, 1.0, 0.04 );
+    // The water was frozen: at the end of the failing trial (the layer
+    // slid) every point's p_w is the one it started with.
+    ASSERT_TRUE( r.mechanism );
+    const mpm::HostSnapshot& after = *r.mechanism;
+    ASSERT_EQ( after.num_points, before.num_points );
+    std::map<int, double> p_w_before;
+    double p_max = 0.0;
+    for ( int p = 0; p < before.num_points; ++p )
+    {
+        p_w_before[before.id[p]] = before.p_w[p];
+        p_max = std::max( p_max, std::abs( before.p_w[p] ) );
+    }
+    double change = 0.0;
+    for ( int p = 0; p < after.num_points; ++p )
+        change = std::max( change,
+                           std::abs( after.p_w[p] - p_w_before[after.id[p]] ) );
+    EXPECT_GT( p_max, 30e3 );
+    EXPECT_LT( change, 1e-9 * p_max );
     // The seepage halves the friction term: far below the dry slope.
     EXPECT_LT( r.search.failing, mpm_test::infiniteSlopeFactor( false ) - 0.5 );
 }
