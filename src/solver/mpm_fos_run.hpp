@@ -183,7 +183,10 @@ int runFos( const CaseConfig& config, const RunOptions& run,
     }
     chooseTimeStep( sim.solver, sim.waveSpeedLimit() );
     std::filesystem::create_directories( run.out_dir );
-    std::filesystem::remove( run.out_dir + "/fos.json" );
+    // Accepted: no earlier result may survive a search that writes none.
+    for ( const char* name :
+          { "/fos.json", "/mechanism.h5", "/mechanism.xdmf" } )
+        std::filesystem::remove( run.out_dir + name );
     installInterruptHandler();
     if ( run.restart_file.empty() )
     {
