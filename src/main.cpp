@@ -2,8 +2,10 @@
 //   rainslide run CASE [--out DIR] [--backend serial|openmp] [--threads N]
 //                 [--restart CHECKPOINT] [--checkpoint-every-s S]
 //                 [--stop-after-steps N] [--quiet]
+//   rainslide fos CASE [--out DIR] [--restart CHECKPOINT] [--start F] ...
+//                 (factor of safety by strength reduction)
 //   rainslide check CASE
-//   (both: [--set KEY=VALUE]... overrides of the case's keys;
+//   (all three: [--set KEY=VALUE]... overrides of the case's keys;
 //          [--max-steps N] [--max-memory-gb X] [--max-output-gb X]
 //          [--max-snapshots N], the budget of the run estimate)
 #include <io/mpm_case_reader.hpp>
@@ -11,6 +13,7 @@
 #include <mpm_config.hpp>
 #include <setup/mpm_case_check.hpp>
 #include <setup/mpm_run_estimate.hpp>
+#include <solver/mpm_fos_run.hpp>
 #include <solver/mpm_run_case.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -32,12 +35,17 @@ constexpr int exit_failed = 1;
 constexpr int exit_bad_input = 2;
 constexpr int exit_interrupted = 130;
 
-int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options )
+int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options,
+                   const mpm::FosOptions* fos )
 {
     Kokkos::InitArguments args;
     args.num_threads = options.threads;
     args.disable_warnings = true;
     Kokkos::ScopeGuard guard( args );
+    if ( fos )
+        return options.backend == "serial"
+                   ? mpm::runFos<Kokkos::Serial>( config, options, *fos )
+                   : mpm::runFos<Kokkos::OpenMP>( config, options, *fos );
     mpm::RunStatus status = mpm::RunStatus::Failed;
     if ( options.backend == "serial" )
     {
@@ -107,6 +115,42 @@ void addOverrideOption( CLI::App& command, std::vector<std::string>& overrides )
                      "strings quoted); repeatable, recorded in metrics.json" )
         ->allow_extra_args( false );
 }
+//! The options of `fos` that set the search and the failure criterion.
+void addFosOptions( CLI::App& command, mpm::FosOptions& fos )
+{
+    mpm::FosSearchSettings& s = fos.search;
+    mpm::FosCriterion& c = fos.criterion;
+    const auto positive =
+        [&]( const char* name, double& value, const std::string& help )
+    {
+        command.add_option( name, value, help )
+            ->check( CLI::PositiveNumber )
+            ->capture_default_str();
+    };
+    positive( "--start", s.start, "first trial strength-reduction factor F" );
+    positive( "--step", s.step, "first bracketing step of F (doubles)" );
+    positive( "--tolerance", s.tolerance,
+              "the factor is found to +- this (bracket <= 2x)" );
+    positive( "--min-factor", s.min_factor, "smallest F tried" );
+    positive( "--max-factor", s.max_factor, "largest F tried" );
+    command.add_option( "--max-trials", s.max_trials, "trials at most" )
+        ->check( CLI::Range( 1, 1000 ) )
+        ->capture_default_str();
+    command
+        .add_option( "--damping", c.damping,
+                     "local damping of the trials, in [0, 1)" )
+        ->check( CLI::Range( 0.0, 0.999 ) )
+        ->capture_default_str();
+    positive( "--periods", c.periods,
+              "trial length in periods of the slowest skeleton wave" );
+    positive( "--growth-ratio", c.growth_ratio,
+              "fails if the displacement grew by more than this fraction of "
+              "itself over the last quarter of a trial" );
+    positive( "--displacement-limit-m", c.displacement_limit_m,
+              "fails if a displacement exceeds this (m)" );
+    positive( "--moving-floor-m", c.moving_floor_m,
+              "displacements below this (m) are not growth" );
+}
 } // namespace
 
 int main( int argc, char* argv[] )
@@ -151,12 +195,54 @@ int main( int argc, char* argv[] )
     addBudgetOptions( *run, budget );
     addOverrideOption( *run, overrides );
 
+    mpm::FosOptions fos_options;
+    CLI::App* fos = app.add_subcommand(
+        "fos", "factor of safety by strength reduction: run the case's stages "
+               "(or take a checkpoint's state), then bisect the factor F "
+               "dividing c and tan(phi) at which a damped trial fails; "
+               "writes DIR/fos.json" );
+    fos->add_option( "case", case_file, "case file (TOML)" )->required();
+    fos->add_option( "--out", options.out_dir,
+                     "output folder (default results/<case name>_fos)" );
+    fos->add_option( "--backend", options.backend, "execution backend" )
+        ->check( CLI::IsMember( { "serial", "openmp" } ) )
+        ->capture_default_str();
+    fos->add_option( "--threads", options.threads, "OpenMP threads" )
+        ->check( CLI::Range( 1, 1024 ) )
+        ->capture_default_str();
+    fos->add_flag( "--quiet", quiet, "no progress lines" );
+    fos->add_option( "--restart", options.restart_file,
+                     "search from this checkpoint's state (an earlier run of "
+                     "the same case) instead of running the stages" )
+        ->check( CLI::ExistingFile );
+    addFosOptions( *fos, fos_options );
+    addBudgetOptions( *fos, budget );
+    addOverrideOption( *fos, overrides );
+
     CLI::App* check = app.add_subcommand( "check", "validate a case file" );
     check->add_option( "case", case_file, "case file (TOML)" )->required();
     addBudgetOptions( *check, budget );
     addOverrideOption( *check, overrides );
 
-    CLI11_PARSE( app, argc, argv );
+    // A bad option is bad input (exit 2), as a bad case file is; --help 0.
+    try
+    {
+        app.parse( argc, argv );
+    }
+    catch ( const CLI::ParseError& error )
+    {
+        const int code = app.exit( error );
+        return code == 0 ? 0 : exit_bad_input;
+    }
+    if ( fos->parsed() &&
+         !( fos_options.search.min_factor < fos_options.search.max_factor ) )
+    {
+        std::cerr << "rainslide: error: --min-factor must be below "
+                     "--max-factor, found "
+                  << fos_options.search.min_factor << " and "
+                  << fos_options.search.max_factor << "\n";
+        return exit_bad_input;
+    }
 
     mpm::CaseCheck case_check;
     try
@@ -188,6 +274,8 @@ int main( int argc, char* argv[] )
         printCheckSummary( config, estimate );
         return 0;
     }
+    if ( fos->parsed() && options.out_dir.empty() )
+        options.out_dir = "results/" + config.name + "_fos";
     if ( options.out_dir.empty() && !options.restart_file.empty() )
     {
         const auto folder =
@@ -206,7 +294,8 @@ int main( int argc, char* argv[] )
     options.progress = !quiet;
     try
     {
-        return runWithKokkos( config, options );
+        return runWithKokkos( config, options,
+                              fos->parsed() ? &fos_options : nullptr );
     }
     catch ( const mpm::RestartError& error )
     {

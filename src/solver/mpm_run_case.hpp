@@ -177,34 +177,32 @@ class OutputObserver : public RunObserver
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Reads the checkpoint `options.restart_file`, refuses it if it was
-  written for another case (RestartError naming both files and what
-  differs), and puts `sim` into its state. The snapshots written before
-  it are found next to it (see SnapshotWriter::findSeries).
+  \brief Reads the checkpoint `restart_file` and refuses it (RestartError
+  naming both files and what differs) if it was written for another case
+  or is damaged. Does not change `sim`.
 */
 template <class ExecSpace>
-Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
-                                 const CaseConfig& config,
-                                 const RunOptions& options,
-                                 std::string& earlier_snapshots )
+Checkpoint readMatchingCheckpoint( const Simulation<ExecSpace>& sim,
+                                   const CaseConfig& config,
+                                   const std::string& restart_file )
 {
     Checkpoint checkpoint;
     try
     {
-        checkpoint = readCheckpoint( options.restart_file );
+        checkpoint = readCheckpoint( restart_file );
     }
     catch ( const std::exception& error )
     {
-        throw RestartError( "cannot read checkpoint '" + options.restart_file +
+        throw RestartError( "cannot read checkpoint '" + restart_file +
                             "': " + error.what() );
     }
     const std::string mismatch = checkpointMismatch(
-        checkpoint, options.restart_file, checkpointIdentity( config, sim ) );
+        checkpoint, restart_file, checkpointIdentity( config, sim ) );
     if ( !mismatch.empty() )
         throw RestartError( mismatch );
     const std::string range = checkpointRangeError( checkpoint, config );
     if ( !range.empty() )
-        throw RestartError( "checkpoint '" + options.restart_file +
+        throw RestartError( "checkpoint '" + restart_file +
                             "' is damaged: " + range );
     if ( checkpoint.identity.backend != ExecSpace::name() )
         std::cerr << "rainslide: note: the checkpoint was written on "
@@ -212,6 +210,23 @@ Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
                   << ExecSpace::name()
                   << ": the results continue the run but are not bitwise "
                      "those of an uninterrupted run\n";
+    return checkpoint;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Reads the checkpoint `options.restart_file` (readMatchingCheckpoint)
+  and puts `sim` into its state. The snapshots written before it are found
+  next to it (see SnapshotWriter::findSeries).
+*/
+template <class ExecSpace>
+Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
+                                 const CaseConfig& config,
+                                 const RunOptions& options,
+                                 std::string& earlier_snapshots )
+{
+    Checkpoint checkpoint =
+        readMatchingCheckpoint( sim, config, options.restart_file );
     const auto folder =
         std::filesystem::path( options.restart_file ).parent_path();
     const std::string stem = ( folder / "particles.h5" ).string();

@@ -1,0 +1,99 @@
+#include <solver/mpm_fos_criterion.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+FosCriterion FosCriterion::scaled( const double factor ) const
+{
+    FosCriterion c = *this;
+    c.growth_ratio *= factor;
+    c.displacement_limit_m *= factor;
+    c.moving_floor_m *= factor;
+    return c;
+}
+
+//---------------------------------------------------------------------------//
+void judgeTrial( const FosCriterion& criterion, FosTrialRecord& record )
+{
+    const double growth = record.u_max_m - record.u_three_quarters_m;
+    record.growth_ratio = record.u_max_m > 0.0 ? growth / record.u_max_m : 0.0;
+    if ( !record.error.empty() )
+    {
+        record.fails = true;
+        record.reason = "run_stopped";
+    }
+    else if ( record.u_max_m > criterion.displacement_limit_m )
+    {
+        record.fails = true;
+        record.reason = "displacement_limit";
+    }
+    else if ( record.u_max_m > criterion.moving_floor_m &&
+              record.growth_ratio > criterion.growth_ratio )
+    {
+        record.fails = true;
+        record.reason = "still_moving";
+    }
+    else
+    {
+        record.fails = false;
+        record.reason = "settled";
+    }
+}
+
+//---------------------------------------------------------------------------//
+MaterialConfig reducedStrength( const MaterialConfig& material,
+                                const double factor )
+{
+    MaterialConfig m = material;
+    if ( m.model != ModelType::MohrCoulomb )
+        return m;
+    const double deg = M_PI / 180.0;
+    m.cohesion_peak_pa /= factor;
+    m.cohesion_residual_pa /= factor;
+    m.softening_modulus_pa /= factor;
+    if ( std::isfinite( m.tensile_strength_pa ) )
+        m.tensile_strength_pa /= factor;
+    m.friction_angle_deg =
+        std::atan( std::tan( m.friction_angle_deg * deg ) / factor ) / deg;
+    m.dilation_angle_deg =
+        std::atan( std::tan( m.dilation_angle_deg * deg ) / factor ) / deg;
+    return m;
+}
+
+//---------------------------------------------------------------------------//
+std::string describeCriterion( const FosCriterion& c )
+{
+    std::ostringstream s;
+    s << "damped run (local damping " << c.damping << ") of " << c.periods
+      << " periods of the slowest skeleton wave over the bodies (4 L / c "
+         "sqrt(inertia scaling)) with c and tan(phi) divided by F and the "
+         "pore pressures held; fails if the largest displacement exceeds "
+      << c.displacement_limit_m << " m, or if it exceeds " << c.moving_floor_m
+      << " m and grew by more than " << c.growth_ratio
+      << " of itself over the last quarter of the run, or if the run stops "
+         "(a point leaves the grid, an instability)";
+    return s.str();
+}
+
+//---------------------------------------------------------------------------//
+nlohmann::json trialJson( const FosTrialRecord& r )
+{
+    nlohmann::json j = { { "factor", r.factor },
+                         { "verdict", r.fails ? "fails" : "stable" },
+                         { "reason", r.reason },
+                         { "u_max_m", r.u_max_m },
+                         { "u_three_quarters_m", r.u_three_quarters_m },
+                         { "growth_ratio", r.growth_ratio },
+                         { "ke_ratio", r.ke_ratio },
+                         { "duration_s", r.duration_s },
+                         { "steps", r.steps },
+                         { "wall_s", r.wall_s } };
+    if ( !r.error.empty() )
+        j["error"] = r.error;
+    return j;
+}
+
+} // namespace mpm

@@ -1,0 +1,168 @@
+#ifndef MPM_FOS_TRIAL_HPP
+#define MPM_FOS_TRIAL_HPP
+
+#include <io/mpm_case_config.hpp>
+#include <io/mpm_checkpoint.hpp>
+#include <solver/mpm_checkpoint_state.hpp>
+#include <solver/mpm_fos_criterion.hpp>
+#include <solver/mpm_run_stages.hpp>
+#include <solver/mpm_simulation.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief The stage a strength-reduction trial runs: stage `base` of the
+  case (its gravity, boundaries and loads) with every material's strength
+  divided by `factor` (reducedStrength), no inflow, no static stop, and,
+  in a two-phase scene, every point's p_w held at its value at the trial
+  start (so S and the suction are frozen too).
+*/
+inline StageConfig fosTrialStage( const StageConfig& base, const bool two_phase,
+                                  const double factor, const double damping )
+{
+    StageConfig stage = base;
+    stage.name = "fos_trial";
+    stage.type = StageType::Dynamic;
+    stage.damping = damping;
+    stage.static_stop = StaticStop();
+    stage.snapshot_interval_s = 0.0;
+    stage.snapshot_times_s.clear();
+    stage.reset_displacement = false;
+    stage.inflows.clear();
+    stage.pore_pressures.clear();
+    if ( two_phase )
+    {
+        PorePressureCondition hold;
+        hold.points.kind = PointSelection::Kind::All;
+        hold.hold_initial = true;
+        stage.pore_pressures.push_back( hold );
+    }
+    for ( MaterialConfig& m : stage.materials )
+        m = reducedStrength( m, factor );
+    return stage;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Runs strength-reduction trials on a simulation: each trial starts
+  from the same state, the one `sim` holds when the runner is made (a
+  host copy of every point and grid View), never from the previous
+  trial, and is judged by the FosCriterion.
+*/
+template <class ExecSpace>
+class FosTrialRunner
+{
+  public:
+    FosTrialRunner( Simulation<ExecSpace>& sim, const CaseConfig& config,
+                    const std::size_t base_stage,
+                    const FosCriterion& criterion )
+        : _sim( sim )
+        , _config( config )
+        , _base( config.stages.at( base_stage ) )
+        , _criterion( criterion )
+        , _initial( captureCheckpoint( sim, config, StageLoopState() ) )
+    {
+    }
+
+    //! Simulated duration of a trial, s (criterion.periods x the period
+    //! of the slowest skeleton wave).
+    double duration() const
+    {
+        return _criterion.periods * quasiStaticWindow( _config, _base );
+    }
+
+    /*!
+      \brief One trial at strength-reduction factor `factor`. With
+      `end_state`, the points at the trial's end are copied into it.
+    */
+    FosTrialRecord run( const double factor, HostSnapshot* end_state = nullptr )
+    {
+        const auto start = std::chrono::steady_clock::now();
+        FosTrialRecord record;
+        record.factor = factor;
+        restoreInitialState();
+        // After the restore: the held p_w are the initial state's.
+        _sim.applyStage( fosTrialStage( _base, _sim.twoPhase(), factor,
+                                        _criterion.damping ) );
+        _sim.resetDisplacement();
+        _sim.stateChanged();
+        const StepSettings settings{ _base.gravity_m_per_s2[0],
+                                     _base.gravity_m_per_s2[1],
+                                     _criterion.damping };
+        const double total = duration();
+        const double three_quarters = 0.75 * total;
+        double t = 0.0, ke_max = 0.0, ke = 0.0;
+        bool past_three_quarters = false;
+        // The displacement limit is checked every few steps (a reduction).
+        const long check_every = 10;
+        try
+        {
+            while ( t < total * ( 1.0 - 1.0e-12 ) )
+            {
+                const WaveSpeedLimit limit = _sim.waveSpeedLimit();
+                const double dt =
+                    std::min( chooseTimeStep( _sim.solver, limit ), total - t );
+                _sim.advance( dt, settings, t );
+                _sim.checkStability( dt, limit );
+                t += dt;
+                ++record.steps;
+                ke = _sim.kineticEnergy();
+                ke_max = std::max( ke_max, ke );
+                if ( !past_three_quarters && t >= three_quarters )
+                {
+                    record.u_three_quarters_m = _sim.maxDisplacement();
+                    past_three_quarters = true;
+                }
+                if ( record.steps % check_every == 0 &&
+                     _sim.maxDisplacement() > _criterion.displacement_limit_m )
+                    break;
+            }
+        }
+        catch ( const SimulationError& error )
+        {
+            record.error = error.what();
+        }
+        record.duration_s = t;
+        record.u_max_m = _sim.maxDisplacement();
+        if ( !past_three_quarters )
+            record.u_three_quarters_m = record.u_max_m;
+        record.ke_ratio = ke_max > 0.0 ? ke / ke_max : 0.0;
+        judgeTrial( _criterion, record );
+        if ( end_state )
+            *end_state = hostSnapshot( _sim );
+        record.wall_s = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - start )
+                            .count();
+        return record;
+    }
+
+  private:
+    //! Every state View, the time, step and counters of the initial state.
+    void restoreInitialState()
+    {
+        forEachStateView(
+            _sim, [&]( const std::string& name, const auto& view )
+            { fromCheckpointArray( *_initial.find( name ), view ); } );
+        _sim.time = _initial.time_s;
+        _sim.step = _initial.step;
+        _sim.num_removed = _initial.num_removed;
+        _sim.grid.num_active = _initial.grid_num_active;
+        _sim.stateChanged();
+    }
+
+    Simulation<ExecSpace>& _sim;
+    const CaseConfig& _config;
+    StageConfig _base;
+    FosCriterion _criterion;
+    Checkpoint _initial;
+};
+
+} // namespace mpm
+
+#endif // MPM_FOS_TRIAL_HPP
