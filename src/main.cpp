@@ -13,6 +13,7 @@
 #include <mpm_config.hpp>
 #include <setup/mpm_case_check.hpp>
 #include <setup/mpm_run_estimate.hpp>
+#include <solver/mpm_fos_history.hpp>
 #include <solver/mpm_fos_run.hpp>
 #include <solver/mpm_run_case.hpp>
 
@@ -42,6 +43,11 @@ int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options,
     args.num_threads = options.threads;
     args.disable_warnings = true;
     Kokkos::ScopeGuard guard( args );
+    if ( fos && fos->every_s > 0.0 )
+        return options.backend == "serial"
+                   ? mpm::runFosHistory<Kokkos::Serial>( config, options, *fos )
+                   : mpm::runFosHistory<Kokkos::OpenMP>( config, options,
+                                                         *fos );
     if ( fos )
         return options.backend == "serial"
                    ? mpm::runFos<Kokkos::Serial>( config, options, *fos )
@@ -115,6 +121,19 @@ void addOverrideOption( CLI::App& command, std::vector<std::string>& overrides )
                      "strings quoted); repeatable, recorded in metrics.json" )
         ->allow_extra_args( false );
 }
+//! --backend, --threads and --quiet of `run` and `fos`.
+void addExecutionOptions( CLI::App& command, mpm::RunOptions& options,
+                          bool& quiet )
+{
+    command.add_option( "--backend", options.backend, "execution backend" )
+        ->check( CLI::IsMember( { "serial", "openmp" } ) )
+        ->capture_default_str();
+    command.add_option( "--threads", options.threads, "OpenMP threads" )
+        ->check( CLI::Range( 1, 1024 ) )
+        ->capture_default_str();
+    command.add_flag( "--quiet", quiet, "no progress lines" );
+}
+
 //! The options of `fos` that set the search and the failure criterion.
 void addFosOptions( CLI::App& command, mpm::FosOptions& fos )
 {
@@ -173,13 +192,7 @@ int main( int argc, char* argv[] )
     run->add_option( "case", case_file, "case file (TOML)" )->required();
     run->add_option( "--out", options.out_dir,
                      "output folder (default results/<case name>)" );
-    run->add_option( "--backend", options.backend, "execution backend" )
-        ->check( CLI::IsMember( { "serial", "openmp" } ) )
-        ->capture_default_str();
-    run->add_option( "--threads", options.threads, "OpenMP threads" )
-        ->check( CLI::Range( 1, 1024 ) )
-        ->capture_default_str();
-    run->add_flag( "--quiet", quiet, "no progress lines" );
+    addExecutionOptions( *run, options, quiet );
     run->add_option( "--restart", options.restart_file,
                      "continue the run from this checkpoint (written by an "
                      "earlier run of the same, unchanged case); --out "
@@ -204,17 +217,17 @@ int main( int argc, char* argv[] )
     fos->add_option( "case", case_file, "case file (TOML)" )->required();
     fos->add_option( "--out", options.out_dir,
                      "output folder (default results/<case name>_fos)" );
-    fos->add_option( "--backend", options.backend, "execution backend" )
-        ->check( CLI::IsMember( { "serial", "openmp" } ) )
-        ->capture_default_str();
-    fos->add_option( "--threads", options.threads, "OpenMP threads" )
-        ->check( CLI::Range( 1, 1024 ) )
-        ->capture_default_str();
-    fos->add_flag( "--quiet", quiet, "no progress lines" );
+    addExecutionOptions( *fos, options, quiet );
     fos->add_option( "--restart", options.restart_file,
                      "search from this checkpoint's state (an earlier run of "
                      "the same case) instead of running the stages" )
         ->check( CLI::ExistingFile );
+    fos->add_option( "--every-s", fos_options.every_s,
+                     "a factor-of-safety history: search at the start of the "
+                     "last stage and every this many simulated seconds of it "
+                     "(writes fos_history.json, one t_<time>/ folder each)" )
+        ->check( CLI::PositiveNumber )
+        ->excludes( "--restart" );
     addFosOptions( *fos, fos_options );
     addBudgetOptions( *fos, budget );
     addOverrideOption( *fos, overrides );

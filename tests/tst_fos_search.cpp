@@ -118,10 +118,11 @@ TEST( FosSearch, stops_after_max_trials )
 //---------------------------------------------------------------------------//
 TEST( FosCriterion, verdicts_from_the_numbers )
 {
-    mpm::FosCriterion c;
-    c.growth_ratio = 0.01;
-    c.displacement_limit_m = 1.0;
-    c.moving_floor_m = 0.001;
+    // The defaults: growth 1 %, limit 1 m, floor 1 mm.
+    const mpm::FosCriterion c;
+    ASSERT_EQ( c.growth_ratio, 0.01 );
+    ASSERT_EQ( c.displacement_limit_m, 1.0 );
+    ASSERT_EQ( c.moving_floor_m, 0.001 );
     mpm::FosTrialRecord r;
     // Came to rest.
     r.u_max_m = 0.05;

@@ -58,8 +58,9 @@ PointSelection readSelection( TableReader& r, const bool polyline_allowed )
 {
     PointSelection selection;
     // In the order of PointSelection::Kind.
-    std::vector<std::string> kinds = { "box",  "surface_cells", "top", "bottom",
-                                       "left", "right",         "all" };
+    std::vector<std::string> kinds = { "box",    "surface_cells", "top",
+                                       "bottom", "left",          "right",
+                                       "all",    "surface_points" };
     if ( polyline_allowed )
         kinds.push_back( "polyline" );
     const toml::node* where_node = r.find( "where" );

@@ -102,14 +102,15 @@ struct PointSelection
 {
     enum class Kind
     {
-        Box,          //!< points inside box_m = [[x0, y0], [x1, y1]]
-        SurfaceCells, //!< points initially in cells below an empty cell
-        TopCells,     //!< points in the cells along the grid's top edge
-        BottomCells,  //!< ... its bottom edge
-        LeftCells,    //!< ... its left edge
-        RightCells,   //!< ... its right edge
-        All,          //!< every active point
-        Polyline      //!< points of the cells polyline_m passes through
+        Box,           //!< points inside box_m = [[x0, y0], [x1, y1]]
+        SurfaceCells,  //!< points initially in cells below an empty cell
+        TopCells,      //!< points in the cells along the grid's top edge
+        BottomCells,   //!< ... its bottom edge
+        LeftCells,     //!< ... its left edge
+        RightCells,    //!< ... its right edge
+        All,           //!< every active point
+        SurfacePoints, //!< the two highest points of each column of points
+        Polyline       //!< points of the cells polyline_m passes through
     };
     Kind kind = Kind::Box;
     std::array<Point2, 2> box_m = { Point2{ 0.0, 0.0 }, Point2{ 0.0, 0.0 } };

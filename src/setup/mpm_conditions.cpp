@@ -5,6 +5,7 @@
 
 #include <mpm_status_flags.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <utility>
@@ -87,6 +88,37 @@ bool inEdgeCells( const PointSelection::Kind kind,
 } // namespace
 
 //---------------------------------------------------------------------------//
+std::vector<bool> topPointsOfColumns( const std::vector<double>& x,
+                                      const std::vector<int>& status,
+                                      const double cell_size_m,
+                                      const std::size_t count )
+{
+    std::vector<std::size_t> order;
+    for ( std::size_t p = 0; p < status.size(); ++p )
+        if ( status[p] == point_active )
+            order.push_back( p );
+    std::sort( order.begin(), order.end(),
+               [&]( std::size_t a, std::size_t b )
+               { return x[2 * a] < x[2 * b]; } );
+    std::vector<bool> picked( status.size(), false );
+    std::size_t begin = 0;
+    while ( begin < order.size() )
+    {
+        std::size_t end = begin + 1;
+        while ( end < order.size() &&
+                x[2 * order[end]] - x[2 * order[end - 1]] <= 0.1 * cell_size_m )
+            ++end;
+        std::sort( order.begin() + begin, order.begin() + end,
+                   [&]( std::size_t a, std::size_t b )
+                   { return x[2 * a + 1] > x[2 * b + 1]; } );
+        for ( std::size_t k = begin; k < std::min( end, begin + count ); ++k )
+            picked[order[k]] = true;
+        begin = end;
+    }
+    return picked;
+}
+
+//---------------------------------------------------------------------------//
 std::vector<bool> selectPoints( const PointSelection& selection,
                                 const std::vector<double>& x,
                                 const std::vector<int>& status,
@@ -108,6 +140,8 @@ std::vector<bool> selectPoints( const PointSelection& selection,
         for ( std::size_t p = 0; p < n; ++p )
             if ( status[p] == point_active )
                 occupied.insert( cellOf( p ) );
+    if ( selection.kind == PointSelection::Kind::SurfacePoints )
+        return topPointsOfColumns( x, status, grid.cell_size_m, 2 );
     std::map<int, double> shares;
     if ( selection.kind == PointSelection::Kind::Polyline )
         shares = polylineSelectionShares( selection, x, status, grid );

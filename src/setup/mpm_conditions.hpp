@@ -4,6 +4,7 @@
 #include <io/mpm_case_config.hpp>
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <vector>
 
@@ -33,9 +34,21 @@ std::map<int, double> polylineSelectionShares( const PointSelection& selection,
                                                const GridConfig& grid );
 
 /*!
+  \brief The `count` highest active points of each column of points: the
+  points sorted by x, a new column where x jumps by more than a tenth of a
+  cell (the columns of a regular fill are h / points_per_cell apart; the
+  points of one column have moved far less than that at a stage start).
+*/
+std::vector<bool> topPointsOfColumns( const std::vector<double>& x,
+                                      const std::vector<int>& status,
+                                      const double cell_size_m,
+                                      const std::size_t count );
+
+/*!
   \brief Which points a selection picks, from their positions x (2 per
   point) and status (only active points are picked). SurfaceCells picks the
   points of every occupied cell whose upper neighbour cell holds no point;
+  SurfacePoints the two highest points of each column (topPointsOfColumns);
   the edge kinds the points of the cells along that grid edge; All every
   active point; Polyline the points of the cells that take a share of the
   line (polylineSelectionShares).

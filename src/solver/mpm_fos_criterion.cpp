@@ -79,18 +79,15 @@ std::string describeCriterion( const FosCriterion& c )
 }
 
 //---------------------------------------------------------------------------//
+// The record's numbers under their own names (to_json).
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE( FosTrialRecord, factor, reason, u_max_m,
+                                    u_three_quarters_m, growth_ratio, ke_ratio,
+                                    duration_s, steps, wall_s )
+
 nlohmann::json trialJson( const FosTrialRecord& r )
 {
-    nlohmann::json j = { { "factor", r.factor },
-                         { "verdict", r.fails ? "fails" : "stable" },
-                         { "reason", r.reason },
-                         { "u_max_m", r.u_max_m },
-                         { "u_three_quarters_m", r.u_three_quarters_m },
-                         { "growth_ratio", r.growth_ratio },
-                         { "ke_ratio", r.ke_ratio },
-                         { "duration_s", r.duration_s },
-                         { "steps", r.steps },
-                         { "wall_s", r.wall_s } };
+    nlohmann::json j = r;
+    j["verdict"] = r.fails ? "fails" : "stable";
     if ( !r.error.empty() )
         j["error"] = r.error;
     return j;

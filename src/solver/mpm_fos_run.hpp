@@ -28,6 +28,9 @@ struct FosOptions
 {
     FosSearchSettings search;
     FosCriterion criterion;
+    //! > 0: a history, a search every this many seconds of the last stage
+    //! (runFosHistory).
+    double every_s = 0.0;
 };
 
 //! What a factor-of-safety search found, with every trial.
@@ -44,6 +47,7 @@ struct FosReport
     //! keep.
     std::string state_from = "stages";
     double state_time_s = 0.0;
+    long state_step = 0;
     std::string trial_stage;
 };
 
@@ -63,6 +67,7 @@ FosReport searchFos( Simulation<ExecSpace>& sim, const CaseConfig& config,
     FosReport report;
     report.trial_duration_s = runner.duration();
     report.state_time_s = sim.time;
+    report.state_step = sim.step;
     report.trial_stage = config.stages.at( base_stage ).name;
     const auto trial = [&]( const double factor )
     {
@@ -134,6 +139,42 @@ inline nlohmann::json fosJson( const CaseConfig& config,
 }
 
 //---------------------------------------------------------------------------//
+//! Creates `out_dir` and removes a search's results from it.
+inline void removeFosResult( const std::string& out_dir )
+{
+    std::filesystem::create_directories( out_dir );
+    for ( const char* name :
+          { "/fos.json", "/mechanism.h5", "/mechanism.xdmf" } )
+        std::filesystem::remove( out_dir + name );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Writes a search's results into `out_dir`: the failure mechanism
+  (`mechanism.h5` + `.xdmf`, if a trial failed) and then `fos.json`
+  (atomically, last). Earlier results there are removed first, so no
+  earlier result survives a search that writes none.
+*/
+inline void writeFosResult( const std::string& out_dir,
+                            const CaseConfig& config, const FosOptions& options,
+                            const FosReport& report, const double wall_s )
+{
+    removeFosResult( out_dir );
+    if ( report.mechanism )
+    {
+        SnapshotWriter writer( out_dir, "mechanism" );
+        RunProgress at;
+        at.stage = "fos_trial";
+        at.step = report.state_step;
+        at.time_s = report.trial_duration_s;
+        writeSnapshot( writer, at, *report.mechanism );
+        writer.finalize();
+    }
+    writeJsonAtomically( out_dir + "/fos.json",
+                         fosJson( config, options, report, wall_s ) );
+}
+
+//---------------------------------------------------------------------------//
 //! Progress lines and Ctrl-C for the stages run before a search.
 class FosStageObserver : public RunObserver
 {
@@ -182,11 +223,8 @@ int runFos( const CaseConfig& config, const RunOptions& run,
         base_stage = checkpoint.loop.stage;
     }
     chooseTimeStep( sim.solver, sim.waveSpeedLimit() );
-    std::filesystem::create_directories( run.out_dir );
     // Accepted: no earlier result may survive a search that writes none.
-    for ( const char* name :
-          { "/fos.json", "/mechanism.h5", "/mechanism.xdmf" } )
-        std::filesystem::remove( run.out_dir + name );
+    removeFosResult( run.out_dir );
     installInterruptHandler();
     if ( run.restart_file.empty() )
     {
@@ -221,21 +259,10 @@ int runFos( const CaseConfig& config, const RunOptions& run,
         searchFos( sim, config, base_stage, options, !run.progress );
     if ( !run.restart_file.empty() )
         report.state_from = run.restart_file;
-    if ( report.mechanism )
-    {
-        SnapshotWriter writer( run.out_dir, "mechanism" );
-        RunProgress at;
-        at.stage = "fos_trial";
-        at.step = sim.step;
-        at.time_s = report.trial_duration_s;
-        writeSnapshot( writer, at, *report.mechanism );
-        writer.finalize();
-    }
     const double wall_s = std::chrono::duration<double>(
                               std::chrono::steady_clock::now() - wall_start )
                               .count();
-    writeJsonAtomically( run.out_dir + "/fos.json",
-                         fosJson( config, options, report, wall_s ) );
+    writeFosResult( run.out_dir, config, options, report, wall_s );
     const FosSearchResult& s = report.search;
     if ( s.found )
         std::cout << "factor of safety " << s.factor << " (stable at "

@@ -1,8 +1,8 @@
 // `rainslide fos` against published factors of safety: the infinite slope
 // (closed form, dry and with slope-parallel seepage) and the homogeneous
 // slope of Griffiths & Lane (1999) at two cell sizes; the failure
-// criterion's thresholds halved and doubled. Serial only (whole searches:
-// about 1.5 min together).
+// criterion's thresholds halved and doubled; a history (--every-s). Serial only
+// (whole searches: about 1.5 min together).
 #include <mpm_test_cli.hpp>
 #include <mpm_test_infinite_slope.hpp>
 #include <mpm_test_temp_dir.hpp>
@@ -22,6 +22,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -71,6 +72,24 @@ void print( const char* what, const mpm::FosReport& r, const double reference )
                  what, r.search.factor, r.search.stable, r.search.failing,
                  reference, 100.0 * ( r.search.factor / reference - 1.0 ),
                  r.trials.size(), wall );
+}
+
+/*!
+  Runs `rainslide fos CASE ARGS --out OUT` on Serial, quietly, searching
+  from `start` in steps of 0.05 to +- 0.02; expects exit 0 and returns the
+  JSON document `OUT/json_name`.
+*/
+nlohmann::json runFosCli( const std::string& case_and_args,
+                          const std::filesystem::path& out, const double start,
+                          const char* json_name )
+{
+    const auto result = mpm_test::runCommand(
+        "fos " + case_and_args + " --out " + out.string() +
+        " --backend serial --quiet --step 0.05 --tolerance 0.02 --start " +
+        std::to_string( start ) );
+    EXPECT_EQ( result.exit_code, 0 ) << result.output;
+    std::ifstream in( out / json_name );
+    return nlohmann::json::parse( in );
 }
 
 // Bishop's simplified method for Griffiths & Lane's example 1 (their
@@ -173,13 +192,7 @@ TEST( FosCli, writes_fos_json_and_the_mechanism )
     const auto out = dir / "out";
     const std::string case_file =
         std::string( RAINSLIDE_CASES_DIR ) + "/fos_griffiths_lane.toml";
-    const auto result = mpm_test::runCommand(
-        "fos " + case_file + " --out " + out.string() +
-        " --backend serial --quiet --start 1.35 --step 0.05 --tolerance "
-        "0.02" );
-    ASSERT_EQ( result.exit_code, 0 ) << result.output;
-    std::ifstream in( out / "fos.json" );
-    const nlohmann::json j = nlohmann::json::parse( in );
+    const nlohmann::json j = runFosCli( case_file, out, 1.35, "fos.json" );
     EXPECT_EQ( j.at( "status" ), "found" );
     const double fs = j.at( "factor_of_safety" ).get<double>();
     EXPECT_NEAR( fs, griffiths_lane_bishop, 0.05 );
@@ -222,14 +235,9 @@ TEST( FosCli, searches_from_a_checkpoint )
         case_file, dir / "run", " --quiet --checkpoint-every-s 1.0" ) );
     ASSERT_EQ( result.exit_code, 0 ) << result.output;
     const auto checkpoint = dir / "run" / "checkpoint.h5";
-    result = mpm_test::runCommand(
-        "fos " + case_file + " --restart " + checkpoint.string() + " --out " +
-        ( dir / "fos" ).string() +
-        " --backend serial --quiet --start 1.35 --step 0.05 --tolerance "
-        "0.02" );
-    ASSERT_EQ( result.exit_code, 0 ) << result.output;
-    std::ifstream in( dir / "fos" / "fos.json" );
-    const nlohmann::json j = nlohmann::json::parse( in );
+    const nlohmann::json j =
+        runFosCli( case_file + " --restart " + checkpoint.string(), dir / "fos",
+                   1.35, "fos.json" );
     EXPECT_EQ( j.at( "state" ).at( "from" ), checkpoint.string() );
     EXPECT_NEAR( j.at( "state" ).at( "time_s" ).get<double>(), 1.0, 0.01 );
     EXPECT_NEAR( j.at( "factor_of_safety" ).get<double>(), 1.39, 0.03 );
@@ -241,6 +249,42 @@ TEST( FosCli, searches_from_a_checkpoint )
                                    ( dir / "other" ).string() );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
     EXPECT_FALSE( std::filesystem::exists( dir / "other" / "fos.json" ) );
+}
+
+// A history (--every-s) of a slope that stays at rest: a search at the
+// last stage's start and every 0.5 s of it, each at the closed-form FS.
+TEST( FosCli, history_searches_every_interval_of_the_last_stage )
+{
+    const auto dir = mpm_test::freshTempDir( "fos_cli_history" );
+    std::string text = mpm_test::infiniteSlopeCase( false, 0.5 );
+    std::string rest = text.substr( text.find( "[[stages]]" ) );
+    for ( const auto& [from, to] :
+          std::vector<std::pair<std::string, std::string>>{
+              { "\"gravity\"", "\"rest\"" },
+              { "quasi_static", "dynamic" },
+              { "duration_s = 10.0", "duration_s = 1.0" } } )
+        rest.replace( rest.find( from ), from.size(), to );
+    const auto case_file = mpm_test::writeCase( dir, text + rest );
+    const auto out = dir / "history";
+    const nlohmann::json j = runFosCli( case_file.string() + " --every-s 0.5",
+                                        out, 2.35, "fos_history.json" );
+    EXPECT_EQ( j.at( "stage" ), "rest" );
+    const auto& rows = j.at( "rows" );
+    ASSERT_EQ( rows.size(), 3u );
+    const double exact = mpm_test::infiniteSlopeFactor( false );
+    for ( std::size_t k = 0; k < rows.size(); ++k )
+    {
+        const auto& row = rows[k];
+        EXPECT_NEAR( row.at( "stage_time_s" ).get<double>(), 0.5 * k, 1e-9 );
+        ASSERT_EQ( row.at( "status" ), "found" );
+        EXPECT_NEAR( row.at( "factor_of_safety" ).get<double>() / exact, 1.0,
+                     0.03 );
+        const auto folder = out / row.at( "folder" ).get<std::string>();
+        EXPECT_TRUE( std::filesystem::exists( folder / "fos.json" ) );
+    }
+    EXPECT_EQ( rows[1].at( "folder" ), "t_0000.50" );
+    EXPECT_TRUE( std::filesystem::exists( out / "states.h5" ) );
+    EXPECT_FALSE( std::filesystem::exists( out / "states.h5.partial" ) );
 }
 
 TEST( FosCli, bad_input_exits_2_before_any_work )
@@ -265,6 +309,15 @@ TEST( FosCli, bad_input_exits_2_before_any_work )
     result = mpm_test::runCommand( "fos " + case_file + " --out " +
                                    ( dir / "a" ).string() + " --start -1" );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    // --every-s must be > 0 and cannot take a checkpoint's state.
+    for ( const std::string& history :
+          { std::string( " --every-s 0" ),
+            " --every-s 1 --restart " + case_file } )
+    {
+        result = mpm_test::runCommand( "fos " + case_file + " --out " +
+                                       ( dir / "a" ).string() + history );
+        EXPECT_EQ( result.exit_code, 2 ) << result.output;
+    }
     result = mpm_test::runCommand( "fos " + case_file + " --out /" );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
     EXPECT_FALSE( std::filesystem::exists( dir / "a" ) );
