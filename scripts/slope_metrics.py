@@ -49,7 +49,7 @@ import numpy as np
 
 from slope_groups import connected_groups, derive_toe_x, sliding_groups, surface_profile  # noqa: F401
 from slope_pressure import crest_hydrostatic, pore_pressure_pulses, pressure_peak  # noqa: F401
-from slope_run import (METRICS, PARTICLES, InputError, Run, Snapshot, read_metrics,  # noqa: F401
+from slope_run import (METRICS, PARTICLES, Frame, InputError, Run, Snapshot, read_metrics,  # noqa: F401
                        run_reporting_errors, write_metrics_key)
 from slope_run import json_num as _json_num
 
@@ -269,6 +269,9 @@ def summary_lines(r):
 def add_options(parser):
     """The threshold options, shared with slope_figures.py."""
     parser.add_argument("--stage", help="stage to analyse (default: the second stage, or the only one)")
+    parser.add_argument("--frame", default=None,
+                        help="'deg,dx,dy': the model was rotated by deg about the origin and "
+                             "shifted by (dx, dy) m; positions are mapped back first")
     parser.add_argument("--toe-x", default=str(DEFAULT_TOE_X),
                         help=f"toe x in m, or 'auto' (default {DEFAULT_TOE_X})")
     for k, v in DEFAULTS.items():
@@ -297,9 +300,12 @@ def main(argv=None):
 
     def body():
         toe, opts = options_from(args)
-        run = Run(args.dir, args.stage, metrics_required=not args.no_write)
+        frame = Frame(args.frame) if args.frame else None
+        run = Run(args.dir, args.stage, metrics_required=not args.no_write, frame=frame)
         try:
             result = public(slope_metrics(run, toe, **opts))
+            if frame is not None:
+                result["frame"] = frame.as_list()
         finally:
             run.close()
         if not args.no_write:

@@ -93,6 +93,30 @@ class Snapshot:
         return f"Snapshot({self.name}, stage={self.stage}, t={self.t})"
 
 
+FRAME_VECTORS = ("x", "displacement", "velocity", "water_velocity")
+
+
+class Frame:
+    """A model built rotated by deg about the origin, then shifted by (dx, dy):
+    x' = R(deg) x + (dx, dy). to_case maps its vectors back: x = R(-deg)(x' - shift)."""
+
+    def __init__(self, text):
+        try:
+            deg, dx, dy = (float(v) for v in text.split(","))
+        except ValueError:
+            raise InputError(f"--frame: expected 'deg,dx,dy' (degrees, metres), got '{text}'")
+        self.deg, self.shift = deg, np.array([dx, dy])
+        a = math.radians(deg)
+        self.back = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
+
+    def to_case(self, v, shift):
+        v = np.asarray(v, dtype=float)
+        return ((v - self.shift) if shift else v) @ self.back.T
+
+    def as_list(self):
+        return [self.deg, float(self.shift[0]), float(self.shift[1])]
+
+
 class Run:
     """A results folder: snapshots of particles.h5 and the analysed stage.
 
@@ -101,10 +125,11 @@ class Run:
     "failure" snapshot after it) get .t = time since the stage start.
     """
 
-    def __init__(self, run_dir, stage=None, metrics_required=False):
+    def __init__(self, run_dir, stage=None, metrics_required=False, frame=None):
         import h5py  # imported here so that --help works without h5py
 
         self.dir = run_dir
+        self.frame = frame
         if not os.path.isdir(run_dir):
             raise InputError(f"{run_dir}: results folder not found")
         self.h5_path = os.path.join(run_dir, PARTICLES)
@@ -206,7 +231,10 @@ class Run:
                 raise InputError(f"{self.h5_path}: {snap.path} has no dataset '{name}'")
             if len(self._cache) > 64:
                 self._cache.clear()
-            self._cache[key] = group[name][()]
+            value = group[name][()]
+            if self.frame is not None and name in FRAME_VECTORS:
+                value = self.frame.to_case(value, shift=name == "x")
+            self._cache[key] = value
         return self._cache[key]
 
     def reference_positions(self):

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Summary table of the slope study's controlled experiments (issue 10).
 
-Usage: study_table.py DIR [DIR ...] [--out MD]
+Usage: study_table.py DIR [DIR ...] [--out MD] [--fos-root ROOT]
 
 Each DIR is a results folder of a slope run analysed by slope_metrics.py
 (metrics.json with its "slope" entry, and particles.h5). One row per run:
@@ -13,7 +13,9 @@ state before the rain): the largest eps_p_bar within 1 m of the toe of the
 cut (56.33, 1.0), the crest of the cut (54.47, 5.0) and the crest/slope
 corner (15.0, 19.36), with the cohesion it leaves (c0 + H eps_p_bar, at
 least c_r; the base soil's c0 = 20 kPa, H = -250 kPa, c_r = 0.1 kPa).
-Prints the Markdown table (and writes it to MD). Errors in the input give
+With --fos-root, a last column gives the factor of safety at each searched
+time of ROOT/<basename of DIR>/fos_history.json (rainslide fos --every-s), or
+"–" where there is none. Prints the Markdown table (and writes it to MD). Errors in the input give
 one line "study_table: error: ..." and exit code 2.
 """
 import argparse
@@ -22,6 +24,9 @@ import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from slope_run import Frame  # noqa: E402
 
 PLACES = (("toe of the cut", (56.3323, 1.0)), ("crest of the cut", (54.4671, 5.0)),
           ("crest/slope corner", (15.0, 19.3648)))
@@ -34,8 +39,9 @@ def fail(message):
     sys.exit(2)
 
 
-def initial_state_strain(run_dir, first_stage):
-    """Largest eps_p_bar near each place at the end of stage 1."""
+def initial_state_strain(run_dir, first_stage, frame=None):
+    """Largest eps_p_bar near each place at the end of stage 1 (positions
+    mapped back to the case's frame when the model was rotated)."""
     import h5py
 
     path = os.path.join(run_dir, "particles.h5")
@@ -48,6 +54,8 @@ def initial_state_strain(run_dir, first_stage):
                 fail(f"{path}: no snapshot of stage '{first_stage}'")
             last = snaps[names[-1]]
             x = last["x"][:]
+            if frame is not None:
+                x = frame.to_case(x, shift=True)
             eps = last["plastic_shear_strain"][:]
     except (OSError, KeyError) as error:
         fail(f"cannot read {path}: {error}")
@@ -56,6 +64,33 @@ def initial_state_strain(run_dir, first_stage):
         near = np.hypot(x[:, 0] - px, x[:, 1] - py) <= RADIUS_M
         values.append(float(eps[near].max()) if near.any() else float("nan"))
     return values
+
+
+def fos_history(fos_root, run_dir):
+    """[(stage time, FS)] of the run's FS history (empty if there is none)."""
+    path = os.path.join(fos_root, os.path.basename(os.path.normpath(run_dir)), "fos_history.json")
+    if not os.path.isfile(path):
+        return []
+    try:
+        with open(path) as f:
+            rows = json.load(f)["rows"]
+        found = [(r["stage_time_s"], r["factor_of_safety"]) for r in rows
+                 if r.get("status", "found") == "found"]
+    except (OSError, ValueError, KeyError, TypeError) as error:
+        fail(f"cannot read {path}: {error}")
+    return found
+
+
+def fos_column(histories):
+    """Header and cells: 'FS at t1 / t2 ... s' when every history has those
+    times (the cells list the factors), else 't: FS' pairs in each cell."""
+    times = {tuple(t for t, _ in h) for h in histories if h}
+    if len(times) == 1:
+        common = times.pop()
+        head = "FS at " + " / ".join(f"{t:g}" for t in common) + " s"
+        return head, [" / ".join(f"{fs:.2f}" for _, fs in h) if h else "–" for h in histories]
+    return "FS (time s: FS)", [", ".join(f"{t:g}: {fs:.2f}" for t, fs in h) if h else "–"
+                               for h in histories]
 
 
 def row(run_dir):
@@ -77,7 +112,8 @@ def row(run_dir):
             retrogressive += 1
     first = slides[0] if slides else None
     final = slope.get("final", {})
-    eps = initial_state_strain(run_dir, first_stage)
+    frame = Frame(",".join(str(v) for v in slope["frame"])) if slope.get("frame") else None
+    eps = initial_state_strain(run_dir, first_stage, frame)
     return {
         "case": metrics.get("case", os.path.basename(run_dir)),
         "first": (f"{first['time_s']:.2f} at x {first['initial_x_range_m'][0]:.1f}-"
@@ -94,16 +130,26 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dirs", nargs="+")
     parser.add_argument("--out", default=None)
+    parser.add_argument("--fos-root", default=None,
+                        help="folder of the runs' FS histories (one subfolder per DIR name)")
     args = parser.parse_args()
     rows = [row(d) for d in args.dirs]
+    if args.fos_root:
+        fos_head, fos_cells = fos_column([fos_history(args.fos_root, d) for d in args.dirs])
+        for r, cell in zip(rows, fos_cells):
+            r["fos"] = cell
     head = ["case", "first failure (s, initial x m)", "slide onsets",
             "retrogressive onsets", "final sliding area (m²)", "run-out (m)"]
     head += [f"ε̄p after stage 1, {name} (c left, kPa)" for name, _ in PLACES]
+    if args.fos_root:
+        head.append(fos_head)
     lines = ["| " + " | ".join(head) + " |", "|---" + "|--:" * (len(head) - 1) + "|"]
     for r in rows:
         cells = [f"`{r['case']}`", r["first"], str(r["onsets"]), str(r["retrogressive"]),
                  f"{r['area']:.1f}", "–" if r["run_out"] is None else f"{r['run_out']:.1f}"]
         cells += [f"{e:.4f} ({max(C_R, C0 + H * e) / 1e3:.1f})" for e in r["eps"]]
+        if args.fos_root:
+            cells.append(r["fos"])
         lines.append("| " + " | ".join(cells) + " |")
     text = "\n".join(lines) + "\n"
     if args.out:

@@ -59,6 +59,20 @@ inline double shearInvariant( const std::array<double, 4>& e )
     return std::sqrt( 2.0 / 3.0 * dd );
 }
 
+//! Increment of the material's softening measure for the plastic strain
+//! increment de_p: sqrt( 2/3 dev : dev ) or ( de_1 - de_3 ), principal.
+inline double softeningIncrementRef( const MaterialParams& m,
+                                     const std::array<double, 4>& de_p )
+{
+    if ( m.softening_measure ==
+         mpm::physics::SofteningMeasure::EngineeringShearStrain )
+    {
+        const auto d = principal( de_p.data() );
+        return d[0] - d[2];
+    }
+    return shearInvariant( de_p );
+}
+
 //! Number of ReturnRegion values (Elastic ... LeftTensionCorner).
 constexpr int num_regions = 11;
 
@@ -107,11 +121,13 @@ using mpm::physics::cohesion;
 using mpm::physics::MaterialParams;
 using mpm::physics::MohrCoulomb;
 using mpm::physics::ReturnRegion;
+using mpm::physics::SofteningMeasure;
 using mpm_test::backSubstitute;
 using mpm_test::cohesionRef;
 using mpm_test::plasticStrain;
 using mpm_test::principal;
 using mpm_test::shearInvariant;
+using mpm_test::softeningIncrementRef;
 using mpm_test::tensileRef;
 using mpm_test::tensionTestParams;
 } // namespace return_mapping

@@ -198,7 +198,7 @@ TEST( FosCriterion, strength_reduction )
     EXPECT_DOUBLE_EQ( mpm::reducedStrength( m, 2.0 ).cohesion_peak_pa, 20e3 );
 }
 
-TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain )
+TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain_and_k0 )
 {
     mpm::StageConfig base;
     base.type = mpm::StageType::QuasiStatic;
@@ -206,6 +206,7 @@ TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain )
     base.inflows.resize( 2 );
     base.pore_pressures.resize( 1 );
     base.static_stop.static_speed_m_per_s = 0.01;
+    base.initial_stress_k0 = 0.6;
     mpm::MaterialConfig m;
     m.model = mpm::ModelType::MohrCoulomb;
     m.cohesion_peak_pa = 10e3;
@@ -215,6 +216,7 @@ TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain )
     EXPECT_DOUBLE_EQ( wet.damping, 0.7 );
     EXPECT_TRUE( wet.inflows.empty() );
     EXPECT_FALSE( wet.static_stop.enabled() );
+    EXPECT_EQ( wet.initial_stress_k0, 0.0 ); // from the saved stress
     ASSERT_EQ( wet.pore_pressures.size(), 1u );
     EXPECT_TRUE( wet.pore_pressures[0].hold_initial );
     EXPECT_EQ( wet.pore_pressures[0].points.kind,

@@ -63,7 +63,8 @@ const ReturnRegion expected[3] = {
     ReturnRegion::MainPlane, ReturnRegion::RightEdge, ReturnRegion::LeftEdge };
 
 // Return from s_tr; checks shared by all plastic returns: f = 0, the eps_p_bar
-// increment equals sqrt(2/3 de_p : de_p) of de_p = C : (s_tr - s).
+// increment equals sqrt(2/3 de_p : de_p) (or (de_1 - de_3), with the
+// engineering measure) of de_p = C : (s_tr - s).
 ReturnRegion checkedReturn( const MaterialParams& m, const double s_tr[4],
                             const double eps_n, double s[4], double& eps )
 {
@@ -77,7 +78,8 @@ ReturnRegion checkedReturn( const MaterialParams& m, const double s_tr[4],
     EXPECT_NEAR( f, 0.0, 1e-10 * scale );
     EXPECT_NEAR( yieldFunction( m, s, eps ), 0.0, 1e-10 * scale );
     EXPECT_NEAR( cohesion( m, eps ), cohesionRef( m, eps ), 1e-12 * 1e4 );
-    const double d_eps = shearInvariant( plasticStrain( m, s_tr, s ) );
+    const double d_eps =
+        softeningIncrementRef( m, plasticStrain( m, s_tr, s ) );
     EXPECT_GT( eps - eps_n, 0.0 );
     EXPECT_NEAR( eps - eps_n, d_eps, 1e-9 * d_eps + 1e-16 );
     return region;
@@ -129,6 +131,38 @@ TEST( MohrCoulomb, main_plane_return_lies_on_surface )
     EXPECT_NEAR( eps - 0.004, d_eps, 1e-10 * d_eps );
     // Softening branch: c = c0 + H eps_p_bar (Eq. 14).
     EXPECT_NEAR( cohesion( m, eps ), 10.0e3 - 250.0e3 * eps, 1e-8 );
+}
+
+// Softening on the engineering plastic shear strain: on the main plane
+// d(eps_1 - eps_3)^p = 2 dgamma, so the return equals the paper's measure's
+// with H scaled by 3 / sqrt(3 + sin^2 psi) (its stress and cohesion), and
+// eps_p_bar grows by that factor more; at the apex by (s_1 - s_3)_tr / 2G.
+TEST( MohrCoulomb, engineering_shear_strain_measure_on_main_plane_and_apex )
+{
+    auto m = testParams();
+    m.softening_measure = SofteningMeasure::EngineeringShearStrain;
+    const double sin_psi = std::sin( m.dilation_angle );
+    const double ratio = 3.0 / std::sqrt( 3.0 + sin_psi * sin_psi );
+    double s[4], eps;
+    ASSERT_EQ( checkedReturn( m, main_tr, 0.004, s, eps ),
+               ReturnRegion::MainPlane );
+    const auto de_p = plasticStrain( m, main_tr, s );
+    const double dgamma = de_p[0] / ( 1.0 + sin_psi );
+    EXPECT_NEAR( eps - 0.004, 2.0 * dgamma, 1e-10 * dgamma );
+
+    auto m_eq = testParams();
+    m_eq.softening_modulus = m.softening_modulus * ratio;
+    double s_eq[4], eps_eq;
+    ASSERT_EQ( checkedReturn( m_eq, main_tr, 0.004 / ratio, s_eq, eps_eq ),
+               ReturnRegion::MainPlane );
+    for ( int i = 0; i < 4; ++i )
+        EXPECT_NEAR( s[i], s_eq[i], 1e-9 * 160.0e3 ) << i;
+    EXPECT_NEAR( eps, eps_eq * ratio, 1e-10 * eps );
+
+    ASSERT_EQ( checkedReturn( m, apex_tr, 0.001, s, eps ), ReturnRegion::Apex );
+    const auto p_tr = principal( apex_tr );
+    EXPECT_NEAR( eps - 0.001, ( p_tr[0] - p_tr[2] ) / ( 2.0 * m.shear_modulus ),
+                 1e-12 );
 }
 
 /*!
@@ -256,55 +290,64 @@ TEST( MohrCoulomb, random_trials_satisfy_consistency_in_every_region )
     std::uniform_real_distribution<double> shear( -80.0e3, 80.0e3 );
     std::uniform_real_distribution<double> strain( 0.0, 0.045 );
     int visits[5] = { 0, 0, 0, 0, 0 };
-    for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
-    {
-        const auto m = testParams( psi_deg );
-        const double sp = std::sin( m.dilation_angle );
-        for ( int n = 0; n < 20000; ++n )
+    for ( const auto measure : { SofteningMeasure::EquivalentPlasticStrain,
+                                 SofteningMeasure::EngineeringShearStrain } )
+        for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
         {
-            const double s_tr[4] = { normal( gen ), normal( gen ), shear( gen ),
-                                     normal( gen ) };
-            const double eps_n = strain( gen );
-            double s[4], eps;
-            const ReturnRegion region = checkedReturn( m, s_tr, eps_n, s, eps );
-            ++visits[static_cast<int>( region )];
-            double scale;
-            const double f_tr = yieldRef( m, s_tr, eps_n, &scale );
-            EXPECT_EQ( region == ReturnRegion::Elastic, f_tr <= 0.0 );
-            if ( region == ReturnRegion::Elastic )
-                continue;
-            // Coaxial: the 2x2 commutator of s and s_tr vanishes.
-            EXPECT_NEAR( ( s[0] - s[1] ) * s_tr[2] -
-                             ( s_tr[0] - s_tr[1] ) * s[2],
-                         0.0, 1e-10 * scale * scale );
-            const auto sig = principal( s );
-            const auto d = principal( plasticStrain( m, s_tr, s ).data() );
-            const double tol = 1e-9 * ( std::fabs( d[0] ) + std::fabs( d[2] ) );
-            const bool right = region == ReturnRegion::RightEdge;
-            const bool left = region == ReturnRegion::LeftEdge;
-            if ( region == ReturnRegion::Apex )
+            auto m = testParams( psi_deg );
+            m.softening_measure = measure;
+            const double sp = std::sin( m.dilation_angle );
+            for ( int n = 0; n < 20000; ++n )
             {
-                EXPECT_NEAR( sig[0], sig[2], 1e-12 * scale );
-                EXPECT_NEAR( sig[0],
-                             cohesionRef( m, eps ) /
-                                 std::tan( m.friction_angle ),
-                             1e-12 * scale );
-                continue;
+                const double s_tr[4] = { normal( gen ), normal( gen ),
+                                         shear( gen ), normal( gen ) };
+                const double eps_n = strain( gen );
+                double s[4], eps;
+                const ReturnRegion region =
+                    checkedReturn( m, s_tr, eps_n, s, eps );
+                ++visits[static_cast<int>( region )];
+                double scale;
+                const double f_tr = yieldRef( m, s_tr, eps_n, &scale );
+                EXPECT_EQ( region == ReturnRegion::Elastic, f_tr <= 0.0 );
+                if ( region == ReturnRegion::Elastic )
+                    continue;
+                // Coaxial: the 2x2 commutator of s and s_tr vanishes.
+                EXPECT_NEAR( ( s[0] - s[1] ) * s_tr[2] -
+                                 ( s_tr[0] - s_tr[1] ) * s[2],
+                             0.0, 1e-10 * scale * scale );
+                const auto sig = principal( s );
+                const auto d = principal( plasticStrain( m, s_tr, s ).data() );
+                const double tol =
+                    1e-9 * ( std::fabs( d[0] ) + std::fabs( d[2] ) );
+                const bool right = region == ReturnRegion::RightEdge;
+                const bool left = region == ReturnRegion::LeftEdge;
+                if ( region == ReturnRegion::Apex )
+                {
+                    EXPECT_NEAR( sig[0], sig[2], 1e-12 * scale );
+                    EXPECT_NEAR( sig[0],
+                                 cohesionRef( m, eps ) /
+                                     std::tan( m.friction_angle ),
+                                 1e-12 * scale );
+                    continue;
+                }
+                // de_p = sum_k dgamma_k b_k, dgamma_k >= 0: main d2 = 0; right
+                // (s2 = s3) d2 <= 0; left (s1 = s2) d2 >= 0; and
+                // (1 - sin psi) (positive part) = -(1 + sin psi) (negative
+                // part).
+                EXPECT_LE( right  ? d[1]
+                           : left ? -d[1]
+                                  : std::fabs( d[1] ),
+                           tol );
+                EXPECT_NEAR( ( d[0] + ( left ? d[1] : 0.0 ) ) * ( 1.0 - sp ),
+                             -( d[2] + ( right ? d[1] : 0.0 ) ) * ( 1.0 + sp ),
+                             tol );
+                // Edges: the two principal stresses of the edge are equal.
+                const double gap = right  ? sig[1] - sig[2]
+                                   : left ? sig[0] - sig[1]
+                                          : 0.0;
+                EXPECT_NEAR( gap, 0.0, 1e-10 * scale );
             }
-            // de_p = sum_k dgamma_k b_k, dgamma_k >= 0: main d2 = 0; right
-            // (s2 = s3) d2 <= 0; left (s1 = s2) d2 >= 0; and
-            // (1 - sin psi) (positive part) = -(1 + sin psi) (negative part).
-            EXPECT_LE( right ? d[1] : left ? -d[1] : std::fabs( d[1] ), tol );
-            EXPECT_NEAR( ( d[0] + ( left ? d[1] : 0.0 ) ) * ( 1.0 - sp ),
-                         -( d[2] + ( right ? d[1] : 0.0 ) ) * ( 1.0 + sp ),
-                         tol );
-            // Edges: the two principal stresses of the edge are equal.
-            const double gap = right  ? sig[1] - sig[2]
-                               : left ? sig[0] - sig[1]
-                                      : 0.0;
-            EXPECT_NEAR( gap, 0.0, 1e-10 * scale );
         }
-    }
     for ( int r = 0; r < 5; ++r )
         EXPECT_GT( visits[r], 100 ) << "region " << r;
 }

@@ -190,7 +190,7 @@ ReturnRegion checkedReturn( const MaterialParams& m, const double s_tr[4],
                  1e-10 * y_tr.scale * y_tr.scale );
     // eps_p_bar from the plastic strain C : (s_tr - s).
     const auto de_p = plasticStrain( m, s_tr, s );
-    const double d_eps = shearInvariant( de_p );
+    const double d_eps = softeningIncrementRef( m, de_p );
     EXPECT_GE( eps, eps_n );
     EXPECT_NEAR( eps - eps_n, d_eps, 1e-9 * d_eps + 1e-16 );
     // Flow rule in the trial's principal order: C (p_tr - p).
@@ -284,21 +284,24 @@ TEST( TensionCutoff, random_trials_satisfy_consistency_in_every_region )
     std::uniform_real_distribution<double> strain( 0.0, 0.045 );
     int visits[num_regions] = {};
     double worst[num_regions] = {};
-    for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
-        for ( const double sigma_t0 : { 0.0, 4.0e3, 12.0e3 } )
-        {
-            const auto m = tensionTestParams( psi_deg, sigma_t0 );
-            ASSERT_TRUE( m.tension_cutoff );
-            for ( int n = 0; n < 10000; ++n )
+    for ( const auto measure : { SofteningMeasure::EquivalentPlasticStrain,
+                                 SofteningMeasure::EngineeringShearStrain } )
+        for ( const double psi_deg : { 0.0, 10.0, 30.0 } )
+            for ( const double sigma_t0 : { 0.0, 4.0e3, 12.0e3 } )
             {
-                const double s_tr[4] = { normal( gen ), normal( gen ),
-                                         shear( gen ), normal( gen ) };
-                double s[4], eps;
-                const auto r =
-                    checkedReturn( m, s_tr, strain( gen ), s, eps, worst );
-                ++visits[static_cast<int>( r )];
+                auto m = tensionTestParams( psi_deg, sigma_t0 );
+                m.softening_measure = measure;
+                ASSERT_TRUE( m.tension_cutoff );
+                for ( int n = 0; n < 10000; ++n )
+                {
+                    const double s_tr[4] = { normal( gen ), normal( gen ),
+                                             shear( gen ), normal( gen ) };
+                    double s[4], eps;
+                    const auto r =
+                        checkedReturn( m, s_tr, strain( gen ), s, eps, worst );
+                    ++visits[static_cast<int>( r )];
+                }
             }
-        }
     for ( int r = 0; r < num_regions; ++r )
     {
         if ( r == static_cast<int>( ReturnRegion::Apex ) )
@@ -379,3 +382,27 @@ TEST( CaseReader, tensile_strength_above_apex_or_negative_is_rejected )
 }
 
 } // namespace
+
+//---------------------------------------------------------------------------//
+// Case reader: softening_measure (the bad ones are in data/bad_cases:
+// misspelt, on a linear elastic stage override).
+//---------------------------------------------------------------------------//
+TEST( CaseReader, softening_measure_is_read_and_defaults_to_eps_p_bar )
+{
+    const auto plain = mpm::parseCase( minimal_case, "plain.toml" );
+    EXPECT_EQ( mpm::makeMaterialTable( plain.materials )[0].softening_measure,
+               SofteningMeasure::EquivalentPlasticStrain );
+
+    std::string text = minimal_case;
+    const std::string key = "friction_angle_deg = 30.0";
+    text.insert( text.find( key ) + key.size(),
+                 "\nsoftening_measure = \"engineering_shear_strain\"" );
+    const auto c = mpm::parseCase( text, "e.toml" );
+    EXPECT_EQ( c.materials[0].softening_measure,
+               mpm::SofteningMeasureType::EngineeringShearStrain );
+    EXPECT_EQ( mpm::makeMaterialTable( c.materials )[0].softening_measure,
+               SofteningMeasure::EngineeringShearStrain );
+    // Inherited by a stage override of the material.
+    EXPECT_EQ( c.stages[0].materials[0].softening_measure,
+               mpm::SofteningMeasureType::EngineeringShearStrain );
+}

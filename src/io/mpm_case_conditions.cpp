@@ -344,6 +344,29 @@ StaticStop readStaticStop( const toml::table& table, const std::string& path,
 }
 
 //---------------------------------------------------------------------------//
+// initial_stress_k0: K0 in (0, 3]; the geostatic field needs gravity along
+// -y (sigma_v from the weight of the column above each point).
+void readInitialStress( TableReader& r, const std::string& path,
+                        StageConfig& stage, Diagnostics& diag )
+{
+    const auto k0 =
+        r.number( "initial_stress_k0", Range::interval( 0.0, false, 3.0, true ),
+                  "(sigma_h / sigma_v)", Need::Optional );
+    if ( !k0 )
+        return;
+    stage.initial_stress_k0 = *k0;
+    const Point2& g = stage.gravity_m_per_s2;
+    if ( g[0] != 0.0 || !( g[1] < 0.0 ) )
+        diag.keyError( *r.find( "initial_stress_k0" ),
+                       path + ".initial_stress_k0",
+                       "needs the stage's gravity_m_per_s2 along -y ([0, -g], "
+                       "g > 0: the vertical stress is the weight of the "
+                       "column above a point), found [" +
+                           formatNumber( g[0] ) + ", " + formatNumber( g[1] ) +
+                           "] m/s^2" );
+}
+
+//---------------------------------------------------------------------------//
 void readStageTiming( TableReader& r, const std::string& path,
                       const bool type_known, StageConfig& stage,
                       Diagnostics& diag )
@@ -380,6 +403,7 @@ void readStageTiming( TableReader& r, const std::string& path,
     stage.snapshot_times_s = readSnapshotTimes( r );
     stage.reset_displacement =
         r.boolean( "reset_displacement", Need::Optional ).value_or( false );
+    readInitialStress( r, path, stage, diag );
 }
 
 } // namespace Impl

@@ -22,6 +22,13 @@ enum class ModelType
     MohrCoulomb
 };
 
+//! The plastic strain the cohesion softens on (physics::SofteningMeasure).
+enum class SofteningMeasureType
+{
+    EquivalentPlasticStrain, //!< sum sqrt( 2/3 de_p : de_p ), the paper's
+    EngineeringShearStrain   //!< sum ( de_1 - de_3 )^p
+};
+
 //! Which phases a scene models (kernels and fields of the others are
 //! neither run nor allocated).
 enum class AnalysisType
@@ -67,6 +74,8 @@ struct MaterialConfig
     double cohesion_residual_pa = 0.0;
     //! dc/d(eps_p_bar), negative for softening, Pa.
     double softening_modulus_pa = 0.0;
+    SofteningMeasureType softening_measure =
+        SofteningMeasureType::EquivalentPlasticStrain;
     double friction_angle_deg = 0.0;
     double dilation_angle_deg = 0.0;
     //! Tension cut-off sigma_t0 (peak; softens with c), Pa; +infinity: none.
@@ -299,6 +308,10 @@ struct StageConfig
     std::vector<double> snapshot_times_s;
     //! At the end of the stage, reset displacements (x0 = x) for later stages.
     bool reset_displacement = false;
+    //! At the stage start, set the geostatic stress with this earth pressure
+    //! coefficient K0 (sigma_h = K0 sigma_v; mpm_initial_stress.hpp);
+    //! 0: none (the stress is what the earlier stages left).
+    double initial_stress_k0 = 0.0;
     std::vector<MaterialConfig> materials;
     std::vector<BoundaryConfig> boundaries;
     //! Prescribed point pore pressures active in this stage.

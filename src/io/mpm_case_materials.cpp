@@ -133,6 +133,47 @@ void readRetentionTable( TableReader& reader, MaterialDraft& draft,
 
 const std::vector<std::string> model_names = { "linear_elastic",
                                                "mohr_coulomb" };
+const std::vector<std::string> softening_measure_names = {
+    "equivalent_plastic_strain", "engineering_shear_strain" };
+
+//---------------------------------------------------------------------------//
+// Read softening_measure given in this table over the draft's value.
+void readSofteningMeasure( TableReader& reader, MaterialDraft& draft )
+{
+    draft.softening_measure_from_here = false;
+    const toml::node* node = reader.find( "softening_measure" );
+    if ( !node )
+        return;
+    const auto index = reader.choice( "softening_measure",
+                                      softening_measure_names, Need::Optional );
+    if ( !index )
+    {
+        draft.valid = false;
+        return;
+    }
+    draft.softening_measure = static_cast<SofteningMeasureType>( *index );
+    draft.softening_measure_node = node;
+    draft.softening_measure_path = reader.keyPath( "softening_measure" );
+    draft.softening_measure_from_here = true;
+}
+
+//---------------------------------------------------------------------------//
+// The draft's softening measure on a material of model m.model: a written
+// one on a linear elastic material is a mistake, an inherited one dropped.
+void applySofteningMeasure( const MaterialDraft& draft, MaterialConfig& m,
+                            Diagnostics& diag )
+{
+    if ( !draft.softening_measure )
+        return;
+    if ( m.model == ModelType::MohrCoulomb )
+        m.softening_measure = *draft.softening_measure;
+    else if ( draft.softening_measure_from_here )
+        diag.keyError( *draft.softening_measure_node,
+                       draft.softening_measure_path,
+                       "only for model mohr_coulomb; material '" + m.name +
+                           "' has model linear_elastic here (remove the key "
+                           "or set model = \"mohr_coulomb\")" );
+}
 
 //---------------------------------------------------------------------------//
 // Check an upper bound between two parameters (residual <= peak, dilation
@@ -212,6 +253,7 @@ std::vector<std::string> materialKeys()
     std::vector<std::string> keys = { "name", "model" };
     for ( const auto& spec : paramSpecs() )
         keys.push_back( spec.key );
+    keys.push_back( "softening_measure" );
     keys.push_back( "retention" );
     return keys;
 }
@@ -244,6 +286,7 @@ void readMaterialValues( TableReader& reader, MaterialDraft& draft,
             draft.params[p] = GivenValue{ *value, reader.find( spec.key ),
                                           reader.keyPath( spec.key ), true };
     }
+    readSofteningMeasure( reader, draft );
     readRetentionTable( reader, draft, analysis );
     draft.valid = draft.valid && reader.diag().count() == errors_before;
 }
@@ -296,6 +339,7 @@ std::optional<MaterialConfig> finishMaterial( const MaterialDraft& draft,
                         "\"unsaturated\")" );
     if ( draft.retention )
         m.retention = *draft.retention;
+    applySofteningMeasure( draft, m, diag );
     if ( diag.count() != errors_before || !draft.valid )
         return std::nullopt;
 

@@ -52,6 +52,12 @@ struct MaterialDraft
 {
     std::string name;
     std::optional<ModelType> model;
+    //! softening_measure, when given at some level (inherited like a
+    //! parameter: the node and path of where it was given, from_here).
+    std::optional<SofteningMeasureType> softening_measure;
+    const toml::node* softening_measure_node = nullptr;
+    std::string softening_measure_path;
+    bool softening_measure_from_here = false;
     std::array<std::optional<GivenValue>, NumMaterialParams>
         params; //!< by Param
     //! The retention law (unsaturated analyses): given at some level,

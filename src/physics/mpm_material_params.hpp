@@ -19,6 +19,16 @@ enum class Model : int
     MohrCoulomb = 1
 };
 
+//! The plastic strain measure the cohesion softens on (Eq. 14), stored in
+//! eps_p_bar: the paper's equivalent plastic shear strain sum sqrt( 2/3
+//! de_p : de_p ) (deviatoric de_p), or the engineering plastic shear strain
+//! sum ( de_1 - de_3 )^p (largest minus smallest principal increment).
+enum class SofteningMeasure : int
+{
+    EquivalentPlasticStrain = 0,
+    EngineeringShearStrain = 1
+};
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Parameters of one material, in SI units and radians.
@@ -45,6 +55,9 @@ struct MaterialParams
     double tensile_strength = std::numeric_limits<double>::infinity();
     double tensile_ratio = 0.0;  //!< sigma_t0 / c0, so sigma_t = ratio * c
     bool tension_cutoff = false; //!< sigma_t0 < c0 cot(phi): cut-off active
+    //! What eps_p_bar (and so the cohesion's softening) measures.
+    SofteningMeasure softening_measure =
+        SofteningMeasure::EquivalentPlasticStrain;
     // Two-phase scenes only.
     double permeability = 0.0; //!< intrinsic permeability k, m^2
     RetentionParams retention; //!< S(p_w), k_rel(S)

@@ -47,6 +47,9 @@ KOKKOS_INLINE_FUNCTION double yieldFunction( const MaterialParams& m,
   - Apex: de_p = dev(sigma_tr) / 2G, so d(eps_p_bar) = q_tr / 3G (q_tr the
     von Mises stress of the trial), independent of c; then
     p = c(eps_p_bar_new) cot(phi).
+  With softening on the engineering plastic shear strain instead
+  (m.softening_measure), eps_p_bar accumulates (de_1 - de_3)^p: 2 dgamma on
+  the main plane, (sigma_1 - sigma_3)_tr / 2G at the apex.
   - Tension cut-off (m.tension_cutoff, mpm_tension_cutoff.hpp): the same
     invariant of de_p = sum_k dgamma_k b_k over the active planes; a Rankine
     plane sigma_i = sigma_t (associated, b = e_i) gives 2/3 dgamma on its
@@ -135,14 +138,9 @@ struct MohrCoulomb
                 right ? sigma[0] < sigma[1] - tol : sigma[1] < sigma[2] - tol;
             if ( past_apex && sin_phi > 1e-12 )
             {
-                // Apex: d(eps_p_bar) = q_tr / 3G, p = c(eps_p_bar) cot(phi).
-                const double mean =
-                    ( sigma_tr[0] + sigma_tr[1] + sigma_tr[2] ) / 3.0;
-                double dev2 = 0.0;
-                for ( int i = 0; i < 3; ++i )
-                    dev2 += ( sigma_tr[i] - mean ) * ( sigma_tr[i] - mean );
-                const double q_tr = KE::sqrt( 1.5 * dev2 );
-                eps_p_bar_new = eps_p_bar + q_tr / ( 3.0 * m.shear_modulus );
+                // Apex: the trial deviator is all plastic; then
+                // p = c(eps_p_bar) cot(phi).
+                eps_p_bar_new = eps_p_bar + Impl::apexIncrement( m, sigma_tr );
                 const double p_apex =
                     cohesion( m, eps_p_bar_new ) * cos_phi / sin_phi;
                 sigma[0] = sigma[1] = sigma[2] = p_apex;

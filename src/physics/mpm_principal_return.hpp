@@ -149,22 +149,77 @@ KOKKOS_INLINE_FUNCTION void faceGradient( const int i, const int j,
     v[j] = -( 1.0 - sin_angle );
 }
 
-//! d(eps_p_bar) = sqrt( 2/3 e : e ) of the deviatoric plastic strain
-//! e = e_u - c e_w (principal components).
-KOKKOS_INLINE_FUNCTION double
-shearIncrement( const double e_u[3], const double e_w[3], const double c )
+//! Increment of the softening measure (MaterialParams::softening_measure)
+//! for the deviatoric plastic strain e = e_u - c e_w (principal
+//! components): sqrt( 2/3 e : e ), or max_i e_i - min_i e_i = (de_1 - de_3)^p.
+KOKKOS_INLINE_FUNCTION double shearIncrement( const MaterialParams& m,
+                                              const double e_u[3],
+                                              const double e_w[3],
+                                              const double c )
 {
+    namespace KE = Kokkos::Experimental;
+    double e[3];
+    for ( int i = 0; i < 3; ++i )
+        e[i] = e_u[i] - c * e_w[i];
+    if ( m.softening_measure == SofteningMeasure::EngineeringShearStrain )
+        return KE::fmax( KE::fmax( e[0], e[1] ), e[2] ) -
+               KE::fmin( KE::fmin( e[0], e[1] ), e[2] );
     double norm2 = 0.0;
     for ( int i = 0; i < 3; ++i )
-        norm2 += ( e_u[i] - c * e_w[i] ) * ( e_u[i] - c * e_w[i] );
-    return Kokkos::Experimental::sqrt( 2.0 / 3.0 * norm2 );
+        norm2 += e[i] * e[i];
+    return KE::sqrt( 2.0 / 3.0 * norm2 );
+}
+
+//! d/dc of r(c) = c - c0 - H ( eps_p_bar_n + shearIncrement(c) ), with
+//! d_eps = shearIncrement(c): 1 + H sqrt(2/3) (e . e_w) / |e|, or
+//! 1 + H ( e_w[i_max] - e_w[i_min] ) for the engineering shear strain.
+KOKKOS_INLINE_FUNCTION double softeningResidualSlope( const MaterialParams& m,
+                                                      const double e_u[3],
+                                                      const double e_w[3],
+                                                      const double c,
+                                                      const double d_eps )
+{
+    const double h = m.softening_modulus;
+    double e[3];
+    for ( int i = 0; i < 3; ++i )
+        e[i] = e_u[i] - c * e_w[i];
+    if ( m.softening_measure == SofteningMeasure::EngineeringShearStrain )
+    {
+        int i_max = 0, i_min = 0;
+        for ( int i = 1; i < 3; ++i )
+        {
+            i_max = e[i] > e[i_max] ? i : i_max;
+            i_min = e[i] < e[i_min] ? i : i_min;
+        }
+        return 1.0 + h * ( e_w[i_max] - e_w[i_min] );
+    }
+    double e_dot_w = 0.0;
+    for ( int i = 0; i < 3; ++i )
+        e_dot_w += e[i] * e_w[i];
+    return d_eps > 0.0 ? 1.0 + h * ( 2.0 / 3.0 ) * e_dot_w / d_eps : 1.0;
+}
+
+//! Increment of the softening measure of a return to the apex, where the
+//! whole trial deviator is plastic (de_p = dev(sigma_tr) / 2G, principal
+//! sigma_tr descending): q_tr / 3G, or (sigma_1 - sigma_3)_tr / 2G.
+KOKKOS_INLINE_FUNCTION double apexIncrement( const MaterialParams& m,
+                                             const double sigma_tr[3] )
+{
+    if ( m.softening_measure == SofteningMeasure::EngineeringShearStrain )
+        return ( sigma_tr[0] - sigma_tr[2] ) / ( 2.0 * m.shear_modulus );
+    const double mean = ( sigma_tr[0] + sigma_tr[1] + sigma_tr[2] ) / 3.0;
+    double dev2 = 0.0;
+    for ( int i = 0; i < 3; ++i )
+        dev2 += ( sigma_tr[i] - mean ) * ( sigma_tr[i] - mean );
+    const double q_tr = Kokkos::Experimental::sqrt( 1.5 * dev2 );
+    return q_tr / ( 3.0 * m.shear_modulus );
 }
 
 //---------------------------------------------------------------------------//
 /*!
   \brief Cohesion c (Pa) at the end of a return whose deviatoric plastic
   strain is e(c) = e_u - c e_w: root of r(c) = c - c0 - H ( eps_p_bar_n +
-  sqrt(2/3) |e(c)| ) (Eq. 14), or c_r past eps_p_r (Eq. 15).
+  shearIncrement(c) ) (Eq. 14), or c_r past eps_p_r (Eq. 15).
 
   r is convex in c (H <= 0); Newton from c_n converges monotonically. A root
   below c_r means the step passes eps_p_r: then c = c_r (H = 0). If dr/dc
@@ -185,14 +240,9 @@ KOKKOS_INLINE_FUNCTION double softenedCohesion( const MaterialParams& m,
         c = c0 + h * eps_p_bar_n;
         for ( int iter = 0; iter < 50; ++iter )
         {
-            const double d_eps = shearIncrement( e_u, e_w, c );
+            const double d_eps = shearIncrement( m, e_u, e_w, c );
             const double r = c - c0 - h * ( eps_p_bar_n + d_eps );
-            // dr/dc = 1 + H sqrt(2/3) (e . e_w) / |e|.
-            double e_dot_w = 0.0;
-            for ( int i = 0; i < 3; ++i )
-                e_dot_w += ( e_u[i] - c * e_w[i] ) * e_w[i];
-            const double dr =
-                d_eps > 0.0 ? 1.0 + h * ( 2.0 / 3.0 ) * e_dot_w / d_eps : 1.0;
+            const double dr = softeningResidualSlope( m, e_u, e_w, c, d_eps );
             if ( dr <= 0.0 ) // snap-back: |H| too large for G (ill-posed)
                 break;
             const double dc = r / dr;
@@ -288,7 +338,7 @@ faceReturn( const MaterialParams& m, const int num_faces, const int faces[2][2],
     double c = softenedCohesion( m, e_u, e_w, eps_p_bar_n );
 
     // New eps_p_bar; multipliers from c(eps_p_bar) so f = 0 to round-off.
-    eps_p_bar = eps_p_bar_n + shearIncrement( e_u, e_w, c );
+    eps_p_bar = eps_p_bar_n + shearIncrement( m, e_u, e_w, c );
     c = cohesion( m, eps_p_bar );
     for ( int i = 0; i < 3; ++i )
     {

@@ -145,7 +145,7 @@ planeReturn( const MaterialParams& m, const int n, const YieldPlane planes[3],
 
     // Cohesion, eps_p_bar; multipliers from c(eps_p_bar), so f = 0.
     double c = softenedCohesion( m, e_u, e_w, eps_p_bar_n );
-    eps_p_bar = eps_p_bar_n + shearIncrement( e_u, e_w, c );
+    eps_p_bar = eps_p_bar_n + shearIncrement( m, e_u, e_w, c );
     c = cohesion( m, eps_p_bar );
     for ( int k = 0; k < 3; ++k )
         dgamma[k] = k < n ? gamma_u[k] - c * gamma_w[k] : 0.0;

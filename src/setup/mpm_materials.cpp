@@ -48,6 +48,10 @@ makeMaterialTable( const std::vector<MaterialConfig>& materials )
         params.cohesion_peak = m.cohesion_peak_pa;
         params.cohesion_residual = m.cohesion_residual_pa;
         params.softening_modulus = m.softening_modulus_pa;
+        params.softening_measure =
+            m.softening_measure == SofteningMeasureType::EngineeringShearStrain
+                ? physics::SofteningMeasure::EngineeringShearStrain
+                : physics::SofteningMeasure::EquivalentPlasticStrain;
         params.setAngles( m.friction_angle_deg * deg,
                           m.dilation_angle_deg * deg );
         params.setTensileStrength( m.tensile_strength_pa );

@@ -34,6 +34,7 @@ inline StageConfig fosTrialStage( const StageConfig& base, const bool two_phase,
     stage.snapshot_interval_s = 0.0;
     stage.snapshot_times_s.clear();
     stage.reset_displacement = false;
+    stage.initial_stress_k0 = 0.0; // a trial starts from the saved stress
     stage.inflows.clear();
     stage.pore_pressures.clear();
     if ( two_phase )

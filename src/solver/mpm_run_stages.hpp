@@ -6,6 +6,7 @@
 #include <records/mpm_stage_state.hpp>
 #include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_host_snapshot.hpp>
+#include <solver/mpm_initial_stress.hpp>
 #include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
 #include <solver/mpm_static_stop.hpp>
@@ -135,6 +136,21 @@ inline bool checkpointDue( const SolverConfig& solver,
            time_s >= state.next_checkpoint_s * ( 1.0 - 1.0e-12 );
 }
 
+//! The stage's K0 stress field (mpm_initial_stress.hpp) on sim's points.
+template <class ExecSpace>
+void setGeostaticStress( const StageConfig& stage, const CaseConfig& config,
+                         Simulation<ExecSpace>& sim )
+{
+    const PointLattice lattice{
+        config.grid.origin_m[0], config.grid.origin_m[1],
+        config.grid.cell_size_m, config.points_per_cell_per_direction };
+    setGeostaticStress( stage.initial_stress_k0, -stage.gravity_m_per_s2[1],
+                        lattice, sim.materials, sim.water,
+                        config.analysis == AnalysisType::Unsaturated,
+                        sim.particles, sim.water_particles );
+    sim.stateChanged();
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Runs every stage of `config` on `sim`: quasi-static stages until
@@ -172,6 +188,8 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
         if ( !state.stage_started )
         {
             sim.applyStage( stage );
+            if ( stage.initial_stress_k0 > 0.0 )
+                setGeostaticStress( stage, config, sim );
             state.beginStage( state.stage, stage.name, stage.duration_s,
                               quasi_static, schedule.next( 0.0 ) );
             for ( const std::string& key : sim.conditions.empty_selections )

@@ -5,11 +5,30 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 
 namespace
 {
 MPM_TEST_BACKEND_SUITE( ElasticColumn );
+
+const double height = 4.0, h = 0.1, rho = 2000.0, g = 9.81;
+const double E = 1.0e8, nu = 0.3;
+
+// A damped (quasi-static) stage under gravity g of the column.
+mpm::StageConfig dampedStage( const std::string& name, const double duration_s )
+{
+    mpm::StageConfig stage;
+    stage.name = name;
+    stage.type = mpm::StageType::QuasiStatic;
+    stage.gravity_m_per_s2 = { 0.0, -g };
+    stage.damping = 0.1;
+    stage.duration_s = duration_s;
+    return stage;
+}
 
 //---------------------------------------------------------------------------//
 // Column under self-weight after a quasi-static stage: sigma_yy = -rho g d,
@@ -17,14 +36,7 @@ MPM_TEST_BACKEND_SUITE( ElasticColumn );
 TYPED_TEST( ElasticColumn, geostatic_stress_and_settlement )
 {
     using exec_space = TypeParam;
-    const double height = 4.0, h = 0.1, rho = 2000.0, g = 9.81;
-    const double E = 1.0e8, nu = 0.3;
-    mpm::StageConfig stage;
-    stage.name = "gravity";
-    stage.type = mpm::StageType::QuasiStatic;
-    stage.gravity_m_per_s2 = { 0.0, -g };
-    stage.damping = 0.1;
-    stage.duration_s = 20.0;
+    mpm::StageConfig stage = dampedStage( "gravity", 20.0 );
     stage.ke_ratio_tolerance = 1.0e-9;
     auto config = mpm_test::columnCase(
         height, h, mpm_test::elasticMaterial( E, nu, rho ), stage );
@@ -75,6 +87,55 @@ TYPED_TEST( ElasticColumn, geostatic_stress_and_settlement )
             << "cell " << cell;
     }
     EXPECT_LT( max_settlement_error, 0.02 );
+}
+
+//---------------------------------------------------------------------------//
+// The same column started from the geostatic field of initial_stress_k0 =
+// 0.8 (not the elastic nu / (1 - nu) = 0.43 gravity loading gives): the
+// field is in equilibrium under a level surface, so an undamped dynamic
+// stage of about three wave periods (4 H / c = 0.06 s) keeps sigma_xx = 0.8
+// sigma_yy and sigma_yy = -rho g d, and the column hardly moves (against
+// the settlement rho g H^2 / 2 E_c of loading from zero stress, which
+// would swing it by twice that).
+TYPED_TEST( ElasticColumn, k0_field_is_kept_in_equilibrium )
+{
+    using exec_space = TypeParam;
+    const double k0 = 0.8;
+    mpm::StageConfig stage = dampedStage( "k0", 0.2 );
+    stage.type = mpm::StageType::Dynamic;
+    stage.damping = 0.0;
+    stage.initial_stress_k0 = k0;
+    auto config = mpm_test::columnCase(
+        height, h, mpm_test::elasticMaterial( E, nu, rho ), stage );
+
+    mpm::Simulation<exec_space> sim( config );
+    mpm::RunObserver observer;
+    mpm::runStages( sim, config, observer );
+    EXPECT_GT( sim.step, 100 );
+
+    const auto snap = mpm::hostSnapshot( sim );
+    const double E_c = E * ( 1 - nu ) / ( ( 1 + nu ) * ( 1 - 2 * nu ) );
+    const double settlement = rho * g * height * height / ( 2.0 * E_c );
+    double max_u = 0.0, max_ratio_error = 0.0, max_syy_error = 0.0;
+    for ( int p = 0; p < snap.num_points; ++p )
+    {
+        max_u = std::max( max_u, std::abs( snap.displacement[2 * p + 1] ) );
+        const double depth = height - snap.x[2 * p + 1];
+        if ( depth < h || depth > height - h )
+            continue; // away from the ends
+        const double syy = snap.sigma[4 * p + 1];
+        max_syy_error =
+            std::max( max_syy_error,
+                      std::abs( syy + rho * g * depth ) / ( rho * g * depth ) );
+        max_ratio_error = std::max(
+            max_ratio_error, std::abs( snap.sigma[4 * p + 0] / syy - k0 ) );
+    }
+    std::printf( "[ k0 column ] max |u_y| %.3e m (loading from zero: %.3e), "
+                 "|sxx/syy - K0| %.2e, |syy + rho g d| / rho g d %.2e\n",
+                 max_u, settlement, max_ratio_error, max_syy_error );
+    EXPECT_LT( max_u, 0.01 * settlement );
+    EXPECT_LT( max_ratio_error, 0.01 );
+    EXPECT_LT( max_syy_error, 0.01 );
 }
 
 } // namespace

@@ -109,6 +109,16 @@ class StudyTableTest(unittest.TestCase):
             self.assertIn("| 10.00 at x 50.0-56.0 | 4 | 2 | 42.0 | 3.0 |", row)
             self.assertIn("0.0200 (15.0) | 0.0000 (20.0) | 0.0010 (19.8) |", row)
 
+            # With the FS history of a folder of the same name under --fos-root.
+            fos_root = os.path.join(folder, "fos")
+            os.makedirs(os.path.join(fos_root, os.path.basename(folder)))
+            FosHistoryTest().make_history(os.path.join(fos_root, os.path.basename(folder)))
+            result = run_script("study_table.py", folder, "--fos-root", fos_root)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            lines = result.stdout.splitlines()
+            self.assertTrue(lines[0].endswith("| FS at 0 / 5 s |"), lines[0])
+            self.assertTrue(lines[2].endswith("| 1.20 / 0.95 |"), lines[2])
+
 
 if __name__ == "__main__":
     unittest.main()

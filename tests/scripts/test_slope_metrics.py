@@ -192,6 +192,27 @@ class SlopeMetricsTest(unittest.TestCase):
         self.assertAlmostEqual(r["stage_start_time_s"], 1.0)
         self.assertIn("end of stage 'gravity'", r["definition"]["reference_state"])
 
+    def test_rotated_model_mapped_back_by_frame(self):
+        """The synthetic run built rotated by 30 deg and shifted: with --frame
+        the metrics are those of the unrotated run."""
+        make_run(self.dir)
+        a = np.radians(30.0)
+        rot = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+        with h5py.File(os.path.join(self.dir, "particles.h5"), "r+") as f:
+            for snap in f["snapshots"].values():
+                for name in ("x", "displacement", "velocity"):
+                    if name in snap:
+                        v = snap[name][()] @ rot.T + (np.array([5.0, -3.0]) if name == "x" else 0.0)
+                        snap[name][...] = v
+        run = sm.Run(self.dir, frame=sm.Frame("30,5,-3"))
+        try:
+            r = sm.public(sm.slope_metrics(run, 18.0))
+        finally:
+            run.close()
+        self.check_default_result(r, "rainfall")
+        with self.assertRaises(sm.InputError):
+            sm.Frame("30,5")
+
     def make_run_with_wave_speed(self, wave_speed):
         """The synthetic run, its metrics.json recording the undrained wave speed."""
         make_run(self.dir)
@@ -344,6 +365,19 @@ class SlopeMetricsTest(unittest.TestCase):
         cells = [c.strip() for c in rows[2].strip("|").split("|")]
         self.assertEqual(cells[1], "4.00")  # first failure
         self.assertEqual(cells[2], "7")     # the detached slide
+
+    def test_study_panel_smoke_and_bad_input(self):
+        make_run(self.dir)
+        png = os.path.join(self.tmp.name, "panel.png")
+        out = subprocess.run([PYTHON, os.path.join(SCRIPTS, "study_panel.py"), png,
+                              f"base={self.dir}", f"rotated={self.dir}",
+                              "--frame", "rotated=0,0,0"], capture_output=True, text=True)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertTrue(os.path.isfile(png))
+        out = subprocess.run([PYTHON, os.path.join(SCRIPTS, "study_panel.py"), png,
+                              self.dir], capture_output=True, text=True)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("study_panel: error: runs: expected LABEL=VALUE", out.stderr)
 
 
 if __name__ == "__main__":
