@@ -103,7 +103,8 @@ double dotOverNodes( const ExecSpace& exec,
 
 /*!
   \brief Work vectors of the solve (residual r, preconditioned z, search
-  direction p, A p), zero off the unknowns.
+  direction p, A p); only their values on the unknowns are used, and p is
+  zero off them.
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct CgWorkspace
@@ -155,9 +156,8 @@ solveJacobiCg( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
     const auto policy = Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes );
 
     // r = b - A x (x copied into p on the unknowns only), z = M^-1 r, p = z.
+    // Only p is read off the unknowns (as a neighbour in A p): zero it there.
     Kokkos::deep_copy( exec, w.p, 0.0 );
-    Kokkos::deep_copy( exec, w.r, 0.0 );
-    Kokkos::deep_copy( exec, w.z, 0.0 );
     Kokkos::parallel_for(
         "cg_copy_x", policy, KOKKOS_LAMBDA( const int m ) {
             const int n = nodes( m );

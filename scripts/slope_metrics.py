@@ -300,7 +300,7 @@ def main(argv=None):
 
     def body():
         toe, opts = options_from(args)
-        frame = Frame(args.frame) if args.frame else None
+        frame = Frame.parse(args.frame) if args.frame else None
         run = Run(args.dir, args.stage, metrics_required=not args.no_write, frame=frame)
         try:
             result = public(slope_metrics(run, toe, **opts))

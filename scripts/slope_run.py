@@ -100,14 +100,19 @@ class Frame:
     """A model built rotated by deg about the origin, then shifted by (dx, dy):
     x' = R(deg) x + (dx, dy). to_case maps its vectors back: x = R(-deg)(x' - shift)."""
 
-    def __init__(self, text):
+    def __init__(self, deg, dx, dy):
+        self.deg, self.shift = float(deg), np.array([float(dx), float(dy)])
+        a = math.radians(self.deg)
+        self.back = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
+
+    @classmethod
+    def parse(cls, text):
+        """The frame of a --frame option 'deg,dx,dy'."""
         try:
             deg, dx, dy = (float(v) for v in text.split(","))
         except ValueError:
             raise InputError(f"--frame: expected 'deg,dx,dy' (degrees, metres), got '{text}'")
-        self.deg, self.shift = deg, np.array([dx, dy])
-        a = math.radians(deg)
-        self.back = np.array([[math.cos(a), math.sin(a)], [-math.sin(a), math.cos(a)]])
+        return cls(deg, dx, dy)
 
     def to_case(self, v, shift):
         v = np.asarray(v, dtype=float)

@@ -95,7 +95,7 @@ def main():
             ax.axis("off")
             ax.text(0.0, 0.5, f"paper, {t:g} s:\n{text}", fontsize=8, va="center")
         for row, (label, run_dir) in zip(axs[1:], runs):
-            frame = Frame(frames[label]) if label in frames else None
+            frame = Frame.parse(frames[label]) if label in frames else None
             run = Run(run_dir, frame=frame)
             try:
                 area = sliding_area(run_dir)

@@ -112,7 +112,7 @@ def row(run_dir):
             retrogressive += 1
     first = slides[0] if slides else None
     final = slope.get("final", {})
-    frame = Frame(",".join(str(v) for v in slope["frame"])) if slope.get("frame") else None
+    frame = Frame(*slope["frame"]) if slope.get("frame") else None
     eps = initial_state_strain(run_dir, first_stage, frame)
     return {
         "case": metrics.get("case", os.path.basename(run_dir)),

@@ -204,14 +204,14 @@ class SlopeMetricsTest(unittest.TestCase):
                     if name in snap:
                         v = snap[name][()] @ rot.T + (np.array([5.0, -3.0]) if name == "x" else 0.0)
                         snap[name][...] = v
-        run = sm.Run(self.dir, frame=sm.Frame("30,5,-3"))
+        run = sm.Run(self.dir, frame=sm.Frame.parse("30,5,-3"))
         try:
             r = sm.public(sm.slope_metrics(run, 18.0))
         finally:
             run.close()
         self.check_default_result(r, "rainfall")
         with self.assertRaises(sm.InputError):
-            sm.Frame("30,5")
+            sm.Frame.parse("30,5")
 
     def make_run_with_wave_speed(self, wave_speed):
         """The synthetic run, its metrics.json recording the undrained wave speed."""
