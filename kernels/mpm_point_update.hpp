@@ -325,7 +325,8 @@ struct TwoPhaseStateUpdate
   gradient, water divergence, pore pressure (`pore_pressure`,
   PorePressurePointUpdate), stress, position update and diagnostics (the
   CFL limit only with `cfl_limit`: the cell water equilibrium, which
-  changes S afterwards, reduces its own).
+  changes S afterwards, reduces its own; with `skeleton` that of the
+  semi-implicit scheme, TwoPhaseWaveSpeed).
 */
 template <class ExecSpace, class PorePressureUpdate>
 PointUpdateReport updatePointsTwoPhase(
@@ -335,13 +336,14 @@ PointUpdateReport updatePointsTwoPhase(
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const double dt, const bool bbar, const bool remove_outside,
     const PorePressureUpdate& pore_pressure,
-    const BaseCellAccess<ExecSpace>& base, const bool cfl_limit )
+    const BaseCellAccess<ExecSpace>& base, const bool cfl_limit,
+    const bool skeleton = false )
 {
     const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
         StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar,
                                          base ),
         pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
-    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water );
+    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water, skeleton );
     return updatePoints<PorePressureUpdate::lanes>(
         "mpm::update_points_two_phase", exec_space, pv, wv, materials,
         gv.geometry, remove_outside, update_states, wave_speed, cfl_limit );

@@ -2,7 +2,9 @@
 #define MPM_PORE_PRESSURE_HPP
 
 #include <mpm_particle_views.hpp>
+#include <mpm_point_stencil.hpp>
 #include <mpm_water_views.hpp>
+#include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_kinematics.hpp>
 #include <physics/mpm_material_params.hpp>
 #include <physics/mpm_point_water.hpp>
@@ -53,7 +55,11 @@ struct RetentionAt
   up to `lanes` points at once, their Newton iterations in lock step
   (physics::porePressureIncrements), and adds the water they took in, ran off
   or were given to `volumes` (physics::addPointStepWater; the point volumes
-  are those at the step's start).
+  are those at the step's start). With `projected` (the semi-implicit
+  scheme, docs/formulation.md §9) the increment is not Eq. 8 at the point
+  but the nodal pressure solve's, dp = sum_I N_I dp_I at the point's
+  start-of-step position, and what the point's water changed by,
+  n (S' - S) + n S dp / K_w, is what the ledger books as its volume change.
 */
 template <class ExecSpace, class PressureView, class RateView, class FlagView>
 struct PorePressurePointUpdate
@@ -73,6 +79,20 @@ struct PorePressurePointUpdate
     UnmanagedView<FlagView> prescribed_hold;
     UnmanagedView<RateView> inflow_rate;
     UnmanagedView<FlagView> inflow_ponding;
+    //! The semi-implicit scheme: the nodal increments and their grid.
+    bool projected = false;
+    UnmanagedView<Kokkos::View<double**, DeviceType<ExecSpace>>> dp_i;
+    UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> x_p;
+    physics::GridGeometry grid{};
+
+    //! The nodal increments dp_i at point q (projected).
+    KOKKOS_INLINE_FUNCTION double nodalIncrement( const int q ) const
+    {
+        PointStencil stencil;
+        grid.weights( x_p( q, 0 ), x_p( q, 1 ), stencil.ci, stencil.cj,
+                      stencil.w, stencil.dwdx, stencil.dwdy );
+        return interpolateAt( stencil, dp_i );
+    }
 
     //! Water volume inflow `inflow` adds to point q per unit volume, 1/s.
     KOKKOS_INLINE_FUNCTION double inflowSource( const int q,
@@ -113,8 +133,10 @@ struct PorePressurePointUpdate
                 p_w_p( q ), S, n, water.bulk_modulus, volume_change );
             stored[l] = physics::SaturationState{ S, dS_dp_p( q ) };
             // Explicit when saturated; a prescribed p_w replaces the
-            // increment.
-            newton[l].done = saturated || condition_p( q ) >= 0;
+            // increment; projected: the nodal solve's.
+            newton[l].done = saturated || condition_p( q ) >= 0 || projected;
+            if ( projected )
+                newton[l].dp = nodalIncrement( q );
         }
         physics::porePressureIncrements( retention, newton, stored,
                                          retention_current );
@@ -128,7 +150,7 @@ struct PorePressurePointUpdate
             const physics::PointPressure after =
                 physics::pointPressureAfterStep(
                     point.p_w, point.dp, point.volume_change, point.n,
-                    water.bulk_modulus, saturated,
+                    water.bulk_modulus, saturated && !projected,
                     inflow >= 0 && inflow_ponding( inflow ), prescribed,
                     !prescribed ? 0.0
                     : prescribed_hold( condition )
@@ -147,11 +169,19 @@ struct PorePressurePointUpdate
                 k_rel_p( q ) = state.k_rel;
             }
             const double div_v_s = L[l][0][0] + L[l][1][1];
+            // Projected: the change the solve gave the point's water.
+            const double volume_change =
+                !projected ? point.volume_change
+                           : point.n * ( S_p( q ) - point.S ) +
+                                 point.storage * ( after.p_w_free - point.p_w );
+            const double flux_divergence =
+                !projected ? water_rate[l] - point.S * div_v_s
+                           : source[l] - volume_change / kinematics.dt -
+                                 point.S * div_v_s;
             physics::addPointStepWater(
-                volumes, vol_p( q ), kinematics.dt, source[l],
-                water_rate[l] - point.S * div_v_s, point.volume_change,
-                point.storage, after.capped, after.p_w_free, prescribed,
-                point.n, point.S, S_p( q ), point.p_w, p_w );
+                volumes, vol_p( q ), kinematics.dt, source[l], flux_divergence,
+                volume_change, point.storage, after.capped, after.p_w_free,
+                prescribed, point.n, point.S, S_p( q ), point.p_w, p_w );
         }
     }
 };
@@ -186,7 +216,11 @@ porePressurePointUpdate( const ParticleViews<ExecSpace>& pv,
              prescribed_p_w,
              prescribed_hold,
              inflow_rate,
-             inflow_ponding };
+             inflow_ponding,
+             false,
+             {},
+             {},
+             physics::GridGeometry{} };
 }
 
 } // namespace mpm

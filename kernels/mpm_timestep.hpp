@@ -46,7 +46,11 @@ struct DryWaveSpeed
   a point near saturation can re-wet within a step, and its fluid
   stiffness then jumps by orders of magnitude (Liakopoulos: 100-fold
   between p_w = -500 Pa and 0), which a step sized on the softer state
-  does not survive.
+  does not survive. With `skeleton` (the semi-implicit scheme, whose
+  pressure solve takes the water's stiffness implicitly): the skeleton's
+  P wave sqrt(E_c / rho_s'), rho_s' = m_p / V the solid mass per unit
+  volume (physics::waveSpeedDry; the water's inertia left out, the faster
+  bound).
 */
 template <class ExecSpace>
 struct TwoPhaseWaveSpeed
@@ -54,19 +58,25 @@ struct TwoPhaseWaveSpeed
     typename ParticleViews<ExecSpace>::unmanaged_type points;
     typename WaterParticleViews<ExecSpace>::unmanaged_type water_points;
     physics::WaterParams water;
+    bool skeleton = false;
 
     TwoPhaseWaveSpeed( const ParticleViews<ExecSpace>& pv,
                        const WaterParticleViews<ExecSpace>& wv,
-                       const physics::WaterParams& water_params )
+                       const physics::WaterParams& water_params,
+                       const bool skeleton_only = false )
         : points( unmanaged( pv ) )
         , water_points( unmanaged( wv ) )
         , water( water_params )
+        , skeleton( skeleton_only )
     {
     }
 
     KOKKOS_INLINE_FUNCTION double
     operator()( const int p, const physics::MaterialParams& params ) const
     {
+        if ( skeleton )
+            return physics::waveSpeedDry( params, points.m_p( p ),
+                                          points.vol_p( p ) );
         return physics::waveSpeedTwoPhase(
             params, water, points.m_p( p ), points.vol_p( p ),
             water_points.n_p( p ), water_points.S_p( p ) );
@@ -126,17 +136,18 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
                                 DryWaveSpeed<ExecSpace>( pv ) );
 }
 
-//! CFL reduction of a two-phase scene (TwoPhaseWaveSpeed).
+//! CFL reduction of a two-phase scene (TwoPhaseWaveSpeed; `skeleton`: the
+//! semi-implicit scheme's).
 template <class ExecSpace>
 WaveSpeedLimit criticalTimeStepTwoPhase(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
-    const double cell_size )
+    const double cell_size, const bool skeleton = false )
 {
-    return pointWaveSpeedLimit( "mpm::critical_time_step_two_phase", exec_space,
-                                pv, materials, cell_size,
-                                TwoPhaseWaveSpeed<ExecSpace>( pv, wv, water ) );
+    return pointWaveSpeedLimit(
+        "mpm::critical_time_step_two_phase", exec_space, pv, materials,
+        cell_size, TwoPhaseWaveSpeed<ExecSpace>( pv, wv, water, skeleton ) );
 }
 
 } // namespace mpm

@@ -106,6 +106,13 @@ void expectDocumented( const std::vector<mpm::Impl::ConfigKey<Config>>& keys,
                 << "documented '" << doc.allowed << "', read as '" << range
                 << "'";
         }
+        else if ( key.choices )
+        {
+            EXPECT_EQ( doc.type, "string" );
+            EXPECT_EQ( doc.default_value,
+                       "\"" + ( *key.choices )[key.get_choice( defaults )] +
+                           "\"" );
+        }
         else
         {
             EXPECT_EQ( doc.type, "boolean" );

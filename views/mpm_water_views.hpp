@@ -102,6 +102,9 @@ struct WaterGridViews
     //! to the solid's (impermeable).
     int_view flags_w_i;
     scalar_view div_w_c; //!< B-bar: volume-weighted water divergence per cell
+    //! Semi-implicit: the pore-pressure increment of the last step's
+    //! solve, Pa (the next solve starts from it).
+    scalar_view dp_w_i;
 
     WaterGridViews() = default;
 
@@ -126,6 +129,7 @@ struct WaterGridViews
         f( "dv_w_i", wg.dv_w_i... );
         f( "flags_w_i", wg.flags_w_i... );
         f( "div_w_c", wg.div_w_c... );
+        f( "dp_w_i", wg.dp_w_i... );
     }
 };
 

@@ -329,6 +329,13 @@ struct GridConfig
     std::array<int, 2> cells = { 1, 1 }; //!< number of cells in x and y
 };
 
+//! How a two-phase step finds the pore pressure (solver.scheme).
+enum class TwoPhaseScheme
+{
+    Explicit,    //!< Eq. 8 at the points (docs/formulation.md §3)
+    SemiImplicit //!< a nodal pressure solve (docs/formulation.md §9)
+};
+
 struct SolverConfig
 {
     //! Courant number: dt = courant * h / (c + |v|)_max.
@@ -372,6 +379,15 @@ struct SolverConfig
     double inertia_scaling = 1.0;
     //! Simulated time between checkpoints (restart files); 0 = none.
     double checkpoint_interval_s = 0.0;
+    //! Two-phase: explicit Eq. 8, or the semi-implicit pressure solve.
+    TwoPhaseScheme scheme = TwoPhaseScheme::Explicit;
+    //! Semi-implicit: the pressure solve stops at |r| <= tolerance |b|.
+    double pressure_tolerance = 1.0e-10;
+    //! Semi-implicit: the most conjugate-gradient iterations of one solve.
+    double pressure_max_iterations = 2000.0;
+    //! Semi-implicit: modified Picard stops at a water residual |R| <= this
+    //! |b| (b the step's predicted water volume rates at the nodes).
+    double pressure_picard_tolerance = 1.0e-6;
 };
 
 //! A tracked material point: the one nearest to position_m when the run

@@ -70,6 +70,9 @@ class CaseParser
             TableReader r( *t, "solver", _diag );
             Impl::readConfigKeys( r, Impl::solverKeys(), "[solver]",
                                   _config.solver );
+            // The semi-implicit scheme solves for the pore pressure.
+            if ( _config.solver.scheme == TwoPhaseScheme::SemiImplicit )
+                Impl::rejectIfDry( r, "scheme", _analysis );
         }
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )

@@ -5,6 +5,14 @@ namespace mpm
 namespace Impl
 {
 //---------------------------------------------------------------------------//
+const std::vector<std::string>& twoPhaseSchemeNames()
+{
+    static const std::vector<std::string> names = { "explicit",
+                                                    "semi_implicit" };
+    return names;
+}
+
+//---------------------------------------------------------------------------//
 const std::vector<ConfigKey<SolverConfig>>& solverKeys()
 {
     using S = SolverConfig;
@@ -28,7 +36,17 @@ const std::vector<ConfigKey<SolverConfig>>& solverKeys()
                    Range::atLeast( 1.0 ), "(inertial mass factor)" ),
         numberKey( "checkpoint_interval_s", &S::checkpoint_interval_s,
                    Range::atLeast( 0.0 ),
-                   "s of simulated time (0 = no checkpoints)" ) };
+                   "s of simulated time (0 = no checkpoints)" ),
+        choiceKey<S, TwoPhaseScheme, &S::scheme>( "scheme",
+                                                  twoPhaseSchemeNames() ),
+        numberKey( "pressure_tolerance", &S::pressure_tolerance,
+                   Range::interval( 0.0, true, 1.0, true ),
+                   "(relative residual)" ),
+        numberKey( "pressure_max_iterations", &S::pressure_max_iterations,
+                   Range::interval( 1.0, false, 1.0e6, false ), "" ),
+        numberKey( "pressure_picard_tolerance", &S::pressure_picard_tolerance,
+                   Range::interval( 0.0, true, 1.0, true ),
+                   "(relative water residual)" ) };
     return keys;
 }
 

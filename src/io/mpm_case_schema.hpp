@@ -20,15 +20,20 @@ namespace Impl
 // the case reader.
 //---------------------------------------------------------------------------//
 
-//! One key of a table read into Config: a number or a boolean.
+//! One key of a table read into Config: a number, a boolean or a choice
+//! among names (stored as an enum).
 template <class Config>
 struct ConfigKey
 {
     const char* name;
-    double Config::*number; //!< null for a boolean key
-    bool Config::*flag;     //!< null for a number key
+    double Config::*number; //!< null unless a number key
+    bool Config::*flag;     //!< null unless a boolean key
     Range range;            //!< allowed numbers
     const char* unit;       //!< unit text of the messages
+    //! A choice key: its names, and the enum's index in Config.
+    const std::vector<std::string>* choices = nullptr;
+    int ( *get_choice )( const Config& ) = nullptr;
+    void ( *set_choice )( Config&, int ) = nullptr;
 };
 
 //! A number key.
@@ -44,6 +49,21 @@ template <class Config>
 ConfigKey<Config> flagKey( const char* name, bool Config::*member )
 {
     return { name, nullptr, member, Range::any(), "" };
+}
+
+//! A choice key: one of `names`, stored as the enum `Member` of Config
+//! (its values 0, 1, ... in the order of the names).
+template <class Config, class Enum, Enum Config::*Member>
+ConfigKey<Config> choiceKey( const char* name,
+                             const std::vector<std::string>& names )
+{
+    ConfigKey<Config> key{ name, nullptr, nullptr, Range::any(), "" };
+    key.choices = &names;
+    key.get_choice = []( const Config& c )
+    { return static_cast<int>( c.*Member ); };
+    key.set_choice = []( Config& c, const int index )
+    { c.*Member = static_cast<Enum>( index ); };
+    return key;
 }
 
 //! The names of the declared keys, in their order.
@@ -68,10 +88,19 @@ void readConfigKeys( TableReader& r, const std::vector<ConfigKey<Config>>& keys,
             config.*key.number =
                 r.number( key.name, key.range, key.unit, Need::Optional )
                     .value_or( config.*key.number );
+        else if ( key.choices )
+        {
+            if ( const auto index =
+                     r.choice( key.name, *key.choices, Need::Optional ) )
+                key.set_choice( config, *index );
+        }
         else
             config.*key.flag = r.boolean( key.name, Need::Optional )
                                    .value_or( config.*key.flag );
 }
+
+//! The names of solver.scheme, in the order of TwoPhaseScheme.
+const std::vector<std::string>& twoPhaseSchemeNames();
 
 //! \brief The keys of [solver], in the order the messages list them.
 const std::vector<ConfigKey<SolverConfig>>& solverKeys();

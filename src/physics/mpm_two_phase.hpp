@@ -220,7 +220,7 @@ porePressureIncrements( const RetentionFunction ( &retention )[Lanes],
 {
     for ( int iter = 0; iter < PorePressureNewton::max_iterations; ++iter )
     {
-        SaturationState state[Lanes];
+        SaturationState state[Lanes] = {};
         bool any = false;
         for ( int l = 0; l < Lanes; ++l )
         {

@@ -391,14 +391,43 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                       ? "fixed dt_s, checked against the CFL limit"
                       : "automatic: courant_number x cell / (fastest wave "
                         "speed + point speed)" },
+        { "scheme", sim.semiImplicit() ? "semi_implicit" : "explicit" },
         { "limiting_wave",
-          sim.twoPhase() ? "undrained mixture or pore-water wave (saturated "
-                           "fluid stiffness, drag implicit)"
-                         : "P wave of the skeleton" },
+          sim.semiImplicit()
+              ? "P wave of the skeleton (the water's stiffness in the "
+                "pressure solve)"
+          : sim.twoPhase() ? "undrained mixture or pore-water wave (saturated "
+                             "fluid stiffness, drag implicit)"
+                           : "P wave of the skeleton" },
         { "courant_number", config.solver.courant_number },
         { "inertia_scaling", config.solver.inertia_scaling },
         { "final_cfl_limit_s", limit.dt_limit },
         { "final_max_wave_speed_m_per_s", limit.max_wave_speed } };
+    if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
+        metrics["pressure_solve"] = {
+            { "method", "Jacobi-preconditioned conjugate gradients on the "
+                        "nodal pressure increment" },
+            { "tolerance", config.solver.pressure_tolerance },
+            { "max_iterations_allowed",
+              static_cast<int>( config.solver.pressure_max_iterations ) },
+            { "solves", solves->solves },
+            { "iterations_total", solves->iterations },
+            { "iterations_mean",
+              solves->solves > 0
+                  ? double( solves->iterations ) / double( solves->solves )
+                  : 0.0 },
+            { "iterations_max", solves->max_iterations },
+            { "max_unknowns", solves->max_unknowns },
+            { "worst_relative_residual", solves->max_relative_residual },
+            { "picard_tolerance", config.solver.pressure_picard_tolerance },
+            { "picard_solves_total", solves->picard_iterations },
+            { "picard_solves_mean", solves->solves > 0
+                                        ? double( solves->picard_iterations ) /
+                                              double( solves->solves )
+                                        : 0.0 },
+            { "picard_solves_max", solves->max_picard_iterations },
+            { "picard_unconverged_steps", solves->picard_unconverged },
+            { "picard_worst_water_residual", solves->max_picard_residual } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );

@@ -24,6 +24,7 @@
 #include <solver/mpm_diagnosis.hpp>
 #include <solver/mpm_dry_step.hpp>
 #include <solver/mpm_host_transfer.hpp>
+#include <solver/mpm_pressure_projection.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_setup.hpp>
 
@@ -106,6 +107,9 @@ class Simulation
             if ( solver.cell_equilibrium )
                 _cell_lists = CellPointLists<ExecSpace>(
                     points.size(), grid.geometry.nx * grid.geometry.ny );
+            if ( semiImplicit() )
+                _projection = PressureProjection<ExecSpace>( grid.geometry,
+                                                             points.size() );
         }
         else
             _dry_step = DryStepPhases<ExecSpace>( grid.geometry );
@@ -116,6 +120,18 @@ class Simulation
     }
 
     bool twoPhase() const { return analysis != AnalysisType::Dry; }
+
+    //! True for the semi-implicit two-phase scheme (a pressure solve).
+    bool semiImplicit() const
+    {
+        return twoPhase() && solver.scheme == TwoPhaseScheme::SemiImplicit;
+    }
+
+    //! The pressure solves so far (semi-implicit), else null.
+    const PressureSolveStats* pressureSolveStats() const
+    {
+        return semiImplicit() ? &_projection.stats() : nullptr;
+    }
 
     //! Materials, boundary flags and point conditions of a stage.
     void applyStage( const StageConfig& stage )
@@ -145,11 +161,12 @@ class Simulation
         WaveSpeedLimit limit =
             diagnosticsCurrent() ? WaveSpeedLimit{ _diagnostics.dt_limit,
                                                    _diagnostics.max_wave_speed }
-            : twoPhase() ? criticalTimeStepTwoPhase( ExecSpace(), particles,
-                                                     water_particles, materials,
-                                                     water, grid.geometry.h )
-                         : criticalTimeStep( ExecSpace(), particles, materials,
-                                             grid.geometry.h );
+            : twoPhase()
+                ? criticalTimeStepTwoPhase( ExecSpace(), particles,
+                                            water_particles, materials, water,
+                                            grid.geometry.h, semiImplicit() )
+                : criticalTimeStep( ExecSpace(), particles, materials,
+                                    grid.geometry.h );
         const double root_f = std::sqrt( solver.inertia_scaling );
         limit.dt_limit *= root_f;
         limit.max_wave_speed /= root_f;
@@ -357,6 +374,18 @@ class Simulation
             _dry_step.updateGrid( exec, grid, dt, settings.damping,
                                   solver.inertia_scaling );
 
+        // 2b. Semi-implicit: the nodal pressure increment of Eq. 8 at the
+        // new time and the velocities it corrects (§9; the points take it
+        // in step 6).
+        [[maybe_unused]] auto pore_pressure = porePressurePointUpdate(
+            particles, water_particles, water, dt, saturated,
+            _retention_current, conditions.prescribed_p_w,
+            conditions.prescribed_hold, conditions.inflow_rate,
+            conditions.inflow_ponding );
+        if constexpr ( Scene::two_phase )
+            if ( semiImplicit() )
+                correctPressure( exec, dt, pore_pressure );
+
         // 3. G2P: point velocities (FLIP/PIC) and displacement increments;
         // 4. the MUSL remap (two-phase: of both phases; 4b: the base
         // cells' water).
@@ -390,15 +419,10 @@ class Simulation
                                            solver.remove_points_leaving_grid );
         else
         {
-            const auto pore_pressure = porePressurePointUpdate(
-                particles, water_particles, water, dt, saturated,
-                _retention_current, conditions.prescribed_p_w,
-                conditions.prescribed_hold, conditions.inflow_rate,
-                conditions.inflow_ponding );
             PointUpdateReport report = updatePointsTwoPhase(
                 exec, particles, water_particles, grid, water_grid, materials,
                 water, dt, solver.bbar, solver.remove_points_leaving_grid,
-                pore_pressure, base, !solver.cell_equilibrium );
+                pore_pressure, base, !solver.cell_equilibrium, semiImplicit() );
 
             // 6b. Cell water equilibrium. It changes S after the point
             // loop, so it reduces the CFL limit of the new state itself (a
@@ -407,13 +431,14 @@ class Simulation
             {
                 const CellEquilibriumLimit after = cellWaterEquilibrium(
                     exec, particles, water_particles, grid.geometry, materials,
-                    water, saturated, solver.cell_pressure_slope, _cell_lists );
+                    water, saturated, solver.cell_pressure_slope, _cell_lists,
+                    semiImplicit() );
                 const WaveSpeedLimit limit =
                     after.listed == numActivePoints() - report.num_removed
                         ? after.limit
-                        : criticalTimeStepTwoPhase( exec, particles,
-                                                    water_particles, materials,
-                                                    water, grid.geometry.h );
+                        : criticalTimeStepTwoPhase(
+                              exec, particles, water_particles, materials,
+                              water, grid.geometry.h, semiImplicit() );
                 report.diagnostics.dt_limit = limit.dt_limit;
                 report.diagnostics.max_wave_speed = limit.max_wave_speed;
             }
@@ -423,6 +448,30 @@ class Simulation
         }
     }
 
+    //! Step 2b of the semi-implicit scheme (PressureProjection::correct),
+    //! after which `pore_pressure` takes the increment at the points.
+    template <class PorePressureUpdate>
+    void correctPressure( const ExecSpace& exec, const double dt,
+                          PorePressureUpdate& pore_pressure )
+    {
+        const PorePressureUpdate terms = pore_pressure;
+        const auto source = KOKKOS_LAMBDA( const int q )
+        {
+            return terms.inflowSource( q, terms.inflow_p( q ) );
+        };
+        _projection.correct(
+            exec, particles, water_particles, grid, water_grid, materials,
+            water, analysis == AnalysisType::Saturated, solver.inertia_scaling,
+            dt, source, conditions.inflow_flux_i,
+            pressureSolveSettings( solver ), step + 1, time );
+        pore_pressure.projected = true;
+        pore_pressure.dp_i = _projection.increments();
+        pore_pressure.x_p = particles.x_p;
+        pore_pressure.grid = grid.geometry;
+    }
+
+    //! The semi-implicit scheme's pressure solve (empty otherwise).
+    PressureProjection<ExecSpace> _projection;
     //! The tabulated retention laws of `materials` (solver.retention_table).
     RetentionTables<ExecSpace> _retention_tables;
     // Grid sums kept between steps (empty if the scene does not need them).

@@ -71,15 +71,20 @@ class StageProbe : public mpm::RunObserver
 };
 
 //---------------------------------------------------------------------------//
-// The paper's set-up (10 cells, 2 x 2 points) against OpenGeoSys at every
-// reference time (2 ... 120 min): every point's p_w within 3 % of the top
-// suction and every cell mean within 2.5 % (achieved: points <= 2.45 %,
-// cells <= 1.9 %; a uniform p_w per cell gave points 4.3-7.7 %), over the
-// first 20 minutes the bottom outflow within 3 % and the top settlement
-// within 8 %.
-TYPED_TEST( Liakopoulos, drainage_matches_reference_point_by_point )
+//! Tolerances of drainageAgainstReference, relative.
+struct LiakopoulosTolerance
+{
+    double point, cell, outflow, settlement;
+};
+
+template <class TypeParam>
+void drainageAgainstReference( const mpm::TwoPhaseScheme scheme,
+                               const double courant_number,
+                               const LiakopoulosTolerance& tolerance )
 {
     auto config = mpm::readCaseFile( RAINSLIDE_CASES_DIR "/liakopoulos.toml" );
+    config.solver.scheme = scheme;
+    config.solver.courant_number = courant_number;
     const auto profiles = readProfiles();
     config.stages[1].duration_s = 60.0 * profiles.rbegin()->first + 1.0;
     config.stages[1].snapshot_interval_s = 0.0;
@@ -132,17 +137,43 @@ TYPED_TEST( Liakopoulos, drainage_matches_reference_point_by_point )
         std::printf( "Liakopoulos %3d min: largest |p_w - reference| / top "
                      "suction: points %.4f, cell means %.4f\n",
                      t, point_error / top_suction, cell_error / top_suction );
-        EXPECT_LT( point_error, 0.03 * top_suction ) << t << " min";
-        EXPECT_LT( cell_error, 0.025 * top_suction ) << t << " min";
+        EXPECT_LT( point_error, tolerance.point * top_suction ) << t << " min";
+        EXPECT_LT( cell_error, tolerance.cell * top_suction ) << t << " min";
         if ( !outflow_ref.count( t ) )
             continue;
+        std::printf( "  outflow off by %.4f, settlement by %.4f\n",
+                     outflow / bottom / outflow_ref.at( t ) - 1.0,
+                     settlement / top / settlement_ref.at( t ) - 1.0 );
         EXPECT_NEAR( outflow / bottom, outflow_ref.at( t ),
-                     0.03 * outflow_ref.at( t ) )
+                     tolerance.outflow * outflow_ref.at( t ) )
             << t << " min";
         EXPECT_NEAR( settlement / top, settlement_ref.at( t ),
-                     0.08 * settlement_ref.at( t ) )
+                     tolerance.settlement * settlement_ref.at( t ) )
             << t << " min";
     }
+}
+
+// The paper's set-up (10 cells, 2 x 2 points) against OpenGeoSys at every
+// reference time (2 ... 120 min): every point's p_w within 3 % of the top
+// suction and every cell mean within 2.5 % (achieved: points <= 2.45 %,
+// cells <= 1.9 %; a uniform p_w per cell gave points 4.3-7.7 %), over the
+// first 20 minutes the bottom outflow within 3 % and the top settlement
+// within 8 %.
+TYPED_TEST( Liakopoulos, drainage_matches_reference_point_by_point )
+{
+    drainageAgainstReference<TypeParam>( mpm::TwoPhaseScheme::Explicit, 0.5,
+                                         { 0.03, 0.025, 0.03, 0.08 } );
+}
+
+// The semi-implicit scheme (docs/formulation.md §9) at 0.4 times the case's
+// Courant number: its step, 0.14 s, is still 18 times the explicit one.
+// Achieved: points <= 2.7 %, cells <= 2.1 %, outflow 1.5-2.2 %, settlement
+// 3.7-3.9 %; first order in time, so at the case's 0.5 the points were
+// 4.9 % off at 5 min (2.6 % at 0.25, 2.2 % at 0.1).
+TYPED_TEST( Liakopoulos, semi_implicit_drainage_matches_reference )
+{
+    drainageAgainstReference<TypeParam>( mpm::TwoPhaseScheme::SemiImplicit, 0.2,
+                                         { 0.03, 0.025, 0.03, 0.08 } );
 }
 
 //---------------------------------------------------------------------------//

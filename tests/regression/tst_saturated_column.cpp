@@ -38,9 +38,10 @@ cellMeans( const mpm::HostSnapshot& snap, const std::vector<double>& field,
 // A saturated column under gravity, starting from p_w = 0, drains through
 // its top surface to the hydrostatic state: p_w = rho_w g depth, v_w -> 0,
 // effective stress sigma'_yy = -(rho_sat - rho_w) g depth (Bishop, S = 1).
-TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
+template <class exec_space>
+void settlesToHydrostatic( const mpm::TwoPhaseScheme scheme,
+                           const double tolerance )
 {
-    using exec_space = TypeParam;
     const double H = 2.0, h = 0.1, g = 9.81, n = 0.3, rho_s = 2650.0;
     // 1.5 s: about 5 consolidation times H^2 / c_v
     mpm::StageConfig stage = mpm_test::stageConfig(
@@ -49,6 +50,7 @@ TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
         H, h, mpm_test::saturatedMaterial( 1.0e7, 0.3, rho_s, n, 1.0e-9 ),
         stage );
     config.analysis = mpm::AnalysisType::Saturated;
+    config.solver.scheme = scheme;
 
     mpm::Simulation<exec_space> sim( config );
     mpm::RunObserver observer;
@@ -75,22 +77,36 @@ TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
     std::printf( "hydrostatic column: cell means off by %.2e (p_w), %.2e "
                  "(effective sigma_yy)\n",
                  p_w_error, s_yy_error );
-    // Achieved: 6.5e-3 (p_w), 6.4e-3 (sigma_yy).
-    EXPECT_LT( p_w_error, 0.01 );
-    EXPECT_LT( s_yy_error, 0.01 );
+    EXPECT_LT( p_w_error, tolerance );
+    EXPECT_LT( s_yy_error, tolerance );
     double v_w_max = 0.0;
     for ( const double v : snap.v_w )
         v_w_max = std::max( v_w_max, std::abs( v ) );
     EXPECT_LT( v_w_max, 1.0e-5 ); // m/s, against K = 1e-2 m/s
 }
 
+// Achieved: 6.5e-3 (p_w), 6.4e-3 (sigma_yy).
+TYPED_TEST( SaturatedColumn, settles_to_hydrostatic_pressure )
+{
+    settlesToHydrostatic<TypeParam>( mpm::TwoPhaseScheme::Explicit, 0.01 );
+}
+
+// The semi-implicit scheme (docs/formulation.md §9). Achieved: 6.5e-3
+// (p_w), 6.4e-3 (sigma_yy), as the explicit scheme.
+TYPED_TEST( SaturatedColumn, semi_implicit_settles_to_hydrostatic_pressure )
+{
+    settlesToHydrostatic<TypeParam>( mpm::TwoPhaseScheme::SemiImplicit, 0.01 );
+}
+
 //---------------------------------------------------------------------------//
 // Undrained oedometric loading (k = 1e-14 m^2: consolidation time ~1e3 s
 // against a 0.5 s run) of a sealed column: the water carries
 // dp = B sigma_c with B = m_v / (m_v + n / K_w) (Skempton's B for 1D).
-TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
+template <class exec_space>
+void undrainedSkemptonB( const mpm::TwoPhaseScheme scheme,
+                         const int cells_skipped, const double p_w_tolerance,
+                         const double s_yy_tolerance )
 {
-    using exec_space = TypeParam;
     const double H = 1.0, h = 0.1, n = 0.3, E = 1.0e7, K_w = 2.0e7;
     mpm::StageConfig stage =
         mpm_test::stageConfig( "load", mpm::StageType::Dynamic, 0.5, 0.0, 0.3 );
@@ -107,6 +123,7 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
     load.length_m = h;
     load.time_function = { { 0.0, 0.0 }, { 0.05, 1.0 } };
     config.stages[0].loads = { load };
+    config.solver.scheme = scheme;
 
     mpm::Simulation<exec_space> sim( config );
     mpm::RunObserver observer;
@@ -121,7 +138,10 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
     double p_w_error = 0.0, s_yy_error = 0.0;
     for ( const auto& [cell, mean] : p_w )
     {
-        if ( cell == static_cast<int>( H / h ) - 1 )
+        std::printf( "  cell %d: p_w off by %.2e, sigma'_yy by %.2e\n", cell,
+                     mean.second / ( B * 1.0e4 ) - 1.0,
+                     s_yy.at( cell ).second / ( -( 1.0 - B ) * 1.0e4 ) - 1.0 );
+        if ( cell >= static_cast<int>( H / h ) - cells_skipped )
             continue;
         p_w_error = std::max( p_w_error,
                               std::abs( mean.second / ( B * 1.0e4 ) - 1.0 ) );
@@ -133,9 +153,28 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
     std::printf( "Skempton's B = %.4f: cell means off by %.2e (p_w), %.2e "
                  "(effective sigma_yy)\n",
                  B, p_w_error, s_yy_error );
-    // Achieved: 7.2e-4 (p_w), 5.8e-3 (sigma_yy).
-    EXPECT_LT( p_w_error, 0.002 );
-    EXPECT_LT( s_yy_error, 0.01 );
+    EXPECT_LT( p_w_error, p_w_tolerance );
+    EXPECT_LT( s_yy_error, s_yy_tolerance );
+}
+
+// Every cell below the loaded one. Achieved: 7.2e-4 (p_w), 5.8e-3
+// (sigma_yy).
+TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
+{
+    undrainedSkemptonB<TypeParam>( mpm::TwoPhaseScheme::Explicit, 1, 0.002,
+                                   0.01 );
+}
+
+// The semi-implicit scheme, the cells more than 0.3 m below the loaded one.
+// Achieved there: 9e-4 (p_w), 5e-3 (sigma_yy). Nearer the load the
+// approximate projection (docs/formulation.md §9) shifts the load between
+// water and skeleton: 0.2 %, 1.2 %, 5 % off in p_w and 1.6 %, 8 %, 35 % in
+// sigma'_yy in the three cells below it (at Courant 0.1: 0.4 %, 0.7 %,
+// 2.3 % in p_w), a known limitation.
+TYPED_TEST( SaturatedColumn, semi_implicit_undrained_load_is_carried_by_b )
+{
+    undrainedSkemptonB<TypeParam>( mpm::TwoPhaseScheme::SemiImplicit, 4, 3.0e-3,
+                                   1.5e-2 );
 }
 
 } // namespace

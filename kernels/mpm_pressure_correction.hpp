@@ -1,0 +1,134 @@
+#ifndef MPM_PRESSURE_CORRECTION_HPP
+#define MPM_PRESSURE_CORRECTION_HPP
+
+#include <mpm_grid_scatter.hpp>
+#include <mpm_grid_views.hpp>
+#include <mpm_node_loop.hpp>
+#include <mpm_particle_views.hpp>
+#include <mpm_point_stencil.hpp>
+#include <mpm_water_views.hpp>
+#include <physics/mpm_grid_geometry.hpp>
+#include <physics/mpm_nodal_water.hpp>
+#include <physics/mpm_two_phase.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace mpm
+{
+//! Fields of the pressure increment's nodal forces.
+struct PressureForceField
+{
+    enum : int
+    {
+        f_w_x, //!< water force per unit water volume fraction, N
+        f_w_y,
+        f_m_x, //!< mixture force (Bishop's share S dp), N
+        f_m_y,
+        count
+    };
+};
+
+template <class ExecSpace>
+using PressureForceSums = GridScatter<ExecSpace, PressureForceField::count>;
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The nodal forces of the pressure increment dp_i (docs/formulation.md
+  §9, item 2), formed as step 1 forms those of p_w: with dp_p = sum_I N_I
+  dp_I at each point, the water force per unit water volume fraction
+  sum_p dp_p V grad N and the mixture force of Bishop's total stress,
+  sum_p S dp_p V grad N. So the corrected velocities are those step 2 gives
+  with p_w + dp at the points.
+*/
+template <class ExecSpace, class NodeView>
+void scatterPressureForces( const ExecSpace& exec,
+                            const ParticleViews<ExecSpace>& pv,
+                            const WaterParticleViews<ExecSpace>& wv,
+                            const physics::GridGeometry& grid,
+                            const NodeView& dp_i,
+                            const PressureForceSums<ExecSpace>& forces )
+{
+    using F = PressureForceField;
+    const auto sums = forces.handle();
+    const auto vol_p = unmanaged( pv.vol_p );
+    const auto S_p = unmanaged( wv.S_p );
+    const auto dp = unmanaged( dp_i );
+    forEachPointStencil(
+        "mpm::pressure_forces", exec, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
+            const double water = interpolateAt( stencil, dp ) * vol_p( p );
+            const double mixture = S_p( p ) * water;
+            auto access = sums.access();
+            for ( int k = 0; k < 4; ++k )
+            {
+                const int node =
+                    nodeIndex( ci + k % 2, cj + k / 2, grid.ny + 1 );
+                access.add( node, F::f_w_x, water * dwdx[k] );
+                access.add( node, F::f_w_y, water * dwdy[k] );
+                access.add( node, F::f_m_x, mixture * dwdx[k] );
+                access.add( node, F::f_m_y, mixture * dwdy[k] );
+            }
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief Adds the velocity corrections of the pressure increment's forces
+  (scatterPressureForces) to the nodal velocities and increments of both
+  phases: step 2's drag solve (physics::TwoPhaseNodalUpdate, with the
+  node's masses, drag, flags and ties, no damping) on the forces alone.
+  The solve is linear in the forces, so this equals solving step 2 again
+  with them added.
+*/
+template <class ExecSpace>
+void correctNodalVelocities(
+    const ExecSpace& exec, GridViews<ExecSpace>& gv,
+    WaterGridViews<ExecSpace>& wg, const PressureForceSums<ExecSpace>& forces,
+    const double dt, const double water_density, const double water_viscosity,
+    const double inertia_scaling,
+    const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i )
+{
+    using F = PressureForceField;
+    const auto sums = forces.handle();
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
+    const auto flux_i = unmanaged( inflow_flux_i );
+    const physics::TwoPhaseNodalUpdate update{ dt, 0.0, inertia_scaling };
+    forEachActiveNode(
+        "mpm::pressure_correction", exec, gv,
+        KOKKOS_LAMBDA( const int n, const int i, const int j ) {
+            double f_w[2], f_m[2];
+            for ( int d = 0; d < 2; ++d )
+            {
+                f_w[d] = sums.take( n, F::f_w_x + d );
+                f_m[d] = sums.take( n, F::f_m_x + d );
+            }
+            const double m_s = nodes.m_i( i, j );
+            if ( !( m_s > 0.0 ) )
+                return;
+            const double m_w = water_nodes.m_w_i( i, j );
+            const physics::NodalWater water = physics::nodalWater(
+                m_w, water_nodes.vol_i( i, j ), water_nodes.q_i( i, j ),
+                water_density, water_viscosity );
+            const int flags = nodes.flags_i( i, j );
+            const int flags_w = water_nodes.flags_w_i( i, j );
+            for ( int d = 0; d < 2; ++d )
+            {
+                const int bit = d == 0 ? node_fix_x : node_fix_y;
+                const auto r =
+                    update( m_s, m_w, 0.0, 0.0, f_m[d], water.nS * f_w[d],
+                            water.drag, flags & bit,
+                            water.locked || ( flags_w & bit ) ||
+                                flux_i( i, j, d ) != 0.0 );
+                nodes.v_i( i, j, d ) += r.v_s;
+                nodes.dv_i( i, j, d ) += r.v_s;
+                water_nodes.v_w_i( i, j, d ) += r.v_w;
+                water_nodes.dv_w_i( i, j, d ) += r.v_w;
+            }
+        } );
+}
+
+} // namespace mpm
+
+#endif // MPM_PRESSURE_CORRECTION_HPP
