@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <string>
 
 namespace mpm
 {
@@ -32,10 +31,8 @@ struct PressureSolveStats
     long max_unknowns = 0;              //!< most unknown nodes of one solve
     long picard_iterations = 0;         //!< linear solves, all steps
     int max_picard_iterations = 0;      //!< most linear solves of one step
-    //! Steps accepted above the tolerance (at Simulation's last halving).
-    long picard_unconverged = 0;
-    long picard_halvings = 0; //!< line-search halvings, all steps
-    long retried_steps = 0;   //!< steps taken again in halves
+    long picard_unconverged = 0;        //!< steps that ended above it
+    long picard_halvings = 0;           //!< line-search halvings, all steps
     //! Worst water residual |R| / |b| a step ended with.
     double max_picard_residual = 0.0;
 };
@@ -115,7 +112,7 @@ class PressureProjection
         const double inertia_scaling, const double dt, const Source& source,
         const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i,
         const PressureSolveSettings& settings, const long step,
-        const double time, const bool retry )
+        const double time )
     {
         _dp_i = wg.dp_w_i;
         pressurePointTerms( exec, pv, wv, gv, wg, materials, water,
@@ -128,17 +125,8 @@ class PressureProjection
         {
             const double residual = solvePicard(
                 exec, pv, wv, gv, materials, water, saturated, dt, settings );
-            if ( _last.converged && residual > settings.picard_tolerance )
-            {
-                if ( retry )
-                {
-                    ++_stats.retried_steps;
-                    throw PressureIterationFailed(
-                        "the pressure iteration ended at a water residual of " +
-                        std::to_string( residual ) + " |b|" );
-                }
+            if ( residual > settings.picard_tolerance )
                 ++_stats.picard_unconverged;
-            }
             _stats.max_picard_residual =
                 std::max( _stats.max_picard_residual, residual );
         }

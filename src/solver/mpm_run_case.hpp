@@ -428,7 +428,6 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
             { "picard_solves_max", solves->max_picard_iterations },
             { "picard_halvings_total", solves->picard_halvings },
             { "picard_unconverged_steps", solves->picard_unconverged },
-            { "steps_retried_in_halves", solves->retried_steps },
             { "picard_worst_water_residual", solves->max_picard_residual } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )

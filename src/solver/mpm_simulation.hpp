@@ -181,41 +181,6 @@ class Simulation
     void advance( const double dt, const StepSettings& settings,
                   const double stage_time_s = 0.0 )
     {
-        _step_water = physics::WaterStepVolumes{};
-        advanceInHalves( dt, settings, stage_time_s, 0 );
-    }
-
-    //! Semi-implicit: how many times a step whose pressure iteration
-    //! fails is halved before its last iterate is accepted.
-    static constexpr int max_pressure_halvings = 6;
-
-  private:
-    /*!
-      \brief One step of dt; semi-implicit: a step whose pressure iteration
-      fails (PressureIterationFailed, thrown before any point changes) is
-      taken again as two steps of dt / 2, down to dt / 2^6. Accepting the
-      failed iterate instead let a sliding slope blow up from rest
-      (docs/formulation.md §9).
-    */
-    void advanceInHalves( const double dt, const StepSettings& settings,
-                          const double stage_time_s, const int halvings )
-    {
-        _pressure_retry = halvings < max_pressure_halvings;
-        try
-        {
-            advanceOnce( dt, settings, stage_time_s );
-        }
-        catch ( const PressureIterationFailed& )
-        {
-            advanceInHalves( 0.5 * dt, settings, stage_time_s, halvings + 1 );
-            advanceInHalves( 0.5 * dt, settings, stage_time_s + 0.5 * dt,
-                             halvings + 1 );
-        }
-    }
-
-    void advanceOnce( const double dt, const StepSettings& settings,
-                      const double stage_time_s )
-    {
         conditions.update( stage_time_s + dt );
         const PointUpdateReport report =
             twoPhase() ? advanceStep<TwoPhaseScene>( dt, settings )
@@ -223,11 +188,7 @@ class Simulation
         num_removed += report.num_removed;
         time += dt;
         ++step;
-        // The water of every part of the step (advanceInHalves).
-        _step_water.point_inflow += report.water.point_inflow;
-        _step_water.runoff += report.water.runoff;
-        _step_water.prescribed += report.water.prescribed;
-        _step_water.flow_in += report.water.flow_in;
+        _step_water = report.water;
         _diagnostics = report.diagnostics;
         _diagnostics_step = step;
         if ( report.first_outside >= 0 )
@@ -237,7 +198,6 @@ class Simulation
                 "= true to remove such points instead)" ) );
     }
 
-  public:
     //! Throws SimulationError naming the first unstable point, if any.
     void checkStability( const double dt, const WaveSpeedLimit& limit ) const
     {
@@ -503,7 +463,7 @@ class Simulation
             exec, particles, water_particles, grid, water_grid, materials,
             water, analysis == AnalysisType::Saturated, solver.inertia_scaling,
             dt, source, conditions.inflow_flux_i,
-            pressureSolveSettings( solver ), step + 1, time, _pressure_retry );
+            pressureSolveSettings( solver ), step + 1, time );
         pore_pressure.projected = true;
         pore_pressure.dp_i = _projection.increments();
         pore_pressure.x_p = particles.x_p;
@@ -528,12 +488,10 @@ class Simulation
     BaseCells<ExecSpace> _base_cells;
     //! Diagnostics of the state after step _diagnostics_step (-1: none).
     StepDiagnostics _diagnostics{ 0.0, 0.0, 0.0, 0.0, 0 };
-    physics::WaterStepVolumes _step_water; //!< of the last advance()
+    physics::WaterStepVolumes _step_water; //!< of the last step
     long _diagnostics_step = -1;
     //! True if S_p, dS_dp_p are the retention law's values at p_w_p.
     bool _retention_current = false;
-    //! The step may still be halved if its pressure iteration fails.
-    bool _pressure_retry = false;
 };
 
 } // namespace mpm

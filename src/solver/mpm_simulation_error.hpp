@@ -14,18 +14,6 @@ class SimulationError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
-/*!
-  \brief The semi-implicit step's pressure iteration did not meet its
-  tolerance (PressureProjection::correct). Thrown before the step changes
-  any point, so the step can be taken again in two halves
-  (Simulation::advance).
-*/
-class PressureIterationFailed : public std::runtime_error
-{
-  public:
-    using std::runtime_error::runtime_error;
-};
-
 } // namespace mpm
 
 #endif // MPM_SIMULATION_ERROR_HPP
