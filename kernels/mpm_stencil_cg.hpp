@@ -51,6 +51,25 @@ struct CgReport
 
 namespace Impl
 {
+//! (A x)_ij: row (i, j) of the 9-point stencil a times x (neighbours
+//! outside the grid skipped).
+template <class StencilView, class NodeView>
+KOKKOS_INLINE_FUNCTION double
+stencilRow( const StencilView& a, const NodeView& x, const int i, const int j )
+{
+    const int nx1 = static_cast<int>( a.extent( 0 ) );
+    const int ny1 = static_cast<int>( a.extent( 1 ) );
+    double sum = 0.0;
+    for ( int di = -1; di <= 1; ++di )
+        for ( int dj = -1; dj <= 1; ++dj )
+        {
+            const int ii = i + di, jj = j + dj;
+            if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
+                sum += a( i, j, 3 * ( di + 1 ) + dj + 1 ) * x( ii, jj );
+        }
+    return sum;
+}
+
 //! y = A x over the unknowns (x = 0 off them, by construction).
 template <class ExecSpace, class NodeView>
 void applyStencil( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
@@ -60,23 +79,12 @@ void applyStencil( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
     const auto nodes = unmanaged( s.nodes );
     const auto xu = unmanaged( x );
     const auto yu = unmanaged( y );
-    const int nx1 = static_cast<int>( a.extent( 0 ) );
     const int ny1 = static_cast<int>( a.extent( 1 ) );
     Kokkos::parallel_for(
         "cg_apply", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
         KOKKOS_LAMBDA( const int m ) {
-            const int n = nodes( m );
-            const int i = n / ny1, j = n % ny1;
-            double sum = 0.0;
-            for ( int di = -1; di <= 1; ++di )
-                for ( int dj = -1; dj <= 1; ++dj )
-                {
-                    const int ii = i + di, jj = j + dj;
-                    if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
-                        sum +=
-                            a( i, j, 3 * ( di + 1 ) + dj + 1 ) * xu( ii, jj );
-                }
-            yu( i, j ) = sum;
+            const int i = nodes( m ) / ny1, j = nodes( m ) % ny1;
+            yu( i, j ) = stencilRow( a, xu, i, j );
         } );
 }
 
@@ -162,17 +170,9 @@ struct CgProducts
 
     KOKKOS_INLINE_FUNCTION void operator()( const int m, CgSums& sums ) const
     {
-        const int nx1 = static_cast<int>( a.extent( 0 ) );
         const int ny1 = static_cast<int>( a.extent( 1 ) );
         const int i = nodes( m ) / ny1, j = nodes( m ) % ny1;
-        double az = 0.0;
-        for ( int di = -1; di <= 1; ++di )
-            for ( int dj = -1; dj <= 1; ++dj )
-            {
-                const int ii = i + di, jj = j + dj;
-                if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
-                    az += a( i, j, 3 * ( di + 1 ) + dj + 1 ) * v.z( ii, jj );
-            }
+        const double az = stencilRow( a, v.z, i, j );
         v.w( i, j ) = az;
         sums.gamma += v.r( i, j ) * v.z( i, j );
         sums.delta += az * v.z( i, j );
