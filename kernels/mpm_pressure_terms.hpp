@@ -56,6 +56,32 @@ struct PressurePointTerms
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief A nodal velocity of the predictor as r* sees it: v* where the node
+  carries at least `min_mass` (kg), else its start-of-step velocity v* - dv.
+  A node a point barely touches (its mass a sliver of the point's) takes
+  the point's stress force on that sliver: its acceleration f / m is
+  unbounded as m -> 0. The explicit step never takes a gradient of such a
+  node's v*: its velocity gradient comes from the remapped velocities
+  (MUSL), which are mass-weighted means of the points' velocities.
+*/
+template <class VectorView, class ScalarView>
+struct PredictorVelocity
+{
+    VectorView v_i;  //!< v*, m/s
+    VectorView dv_i; //!< the step's increment dv, m/s
+    ScalarView m_i;  //!< solid mass, kg
+    double min_mass; //!< kg
+
+    KOKKOS_INLINE_FUNCTION double operator()( const int i, const int j,
+                                              const int d ) const
+    {
+        return m_i( i, j ) >= min_mass ? v_i( i, j, d )
+                                       : v_i( i, j, d ) - dv_i( i, j, d );
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
   \brief The points' terms of the semi-implicit pressure equation
   (docs/formulation.md §9, item 3), from the predictor's nodal velocities
   (gv.v_i, wg.v_w_i after gridUpdateTwoPhase): per point its mobility M
@@ -86,6 +112,7 @@ void pressurePointTerms(
     const auto storage_p = unmanaged( t.storage_p );
     const auto count_c = unmanaged( t.count_c );
     const physics::GridGeometry grid = gv.geometry;
+    const double predictor_mass_share = 0.01;
     forEachPointStencil(
         "mpm::pressure_point_terms", exec, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
@@ -95,11 +122,17 @@ void pressurePointTerms(
             const double n = water_points.n_p( p );
             const double S = water_points.S_p( p );
             const double vol = points.vol_p( p );
+            const double min_mass = predictor_mass_share * points.m_p( p );
+            using Velocity =
+                PredictorVelocity<decltype( nodes.v_i ), decltype( nodes.m_i )>;
+            const Velocity v_s{ nodes.v_i, nodes.dv_i, nodes.m_i, min_mass };
+            const Velocity v_w{ water_nodes.v_w_i, water_nodes.dv_w_i,
+                                nodes.m_i, min_mass };
             double L[2][2];
-            gradientAt( ci, cj, dwdx, dwdy, nodes.v_i, L );
+            gradientAt( ci, cj, dwdx, dwdy, v_s, L );
             const double div_v_w = waterDivergenceAt(
-                ci, cj, dwdx, dwdy, nodes.v_i, water_nodes.v_w_i,
-                water_nodes.m_w_i, water_nodes.vol_i, water.density, n * S, L );
+                ci, cj, dwdx, dwdy, v_s, v_w, water_nodes.m_w_i,
+                water_nodes.vol_i, water.density, n * S, L );
             const double rate = physics::waterVolumeRate( n, S, div_v_w, L );
             mobility_p( p ) =
                 physics::pressureMobility(
