@@ -84,7 +84,8 @@ struct PredictorVelocity
 /*!
   \brief The points' terms of the semi-implicit pressure equation
   (docs/formulation.md §9, item 3), from the predictor's nodal velocities
-  (gv.v_i, wg.v_w_i after gridUpdateTwoPhase): per point its mobility M
+  (gv.v_i, wg.v_w_i after gridUpdateTwoPhase; PredictorVelocity at a node
+  below 1 % of the point's mass): per point its mobility M
   (physics::pressureMobility) and storage C (physics::waterStorage); per
   node the right side sum N V (source - r*), r* = div q* + S div v_s* the
   predictor's water volume rate (waterDivergenceAt, waterVolumeRate), the
@@ -112,6 +113,8 @@ void pressurePointTerms(
     const auto storage_p = unmanaged( t.storage_p );
     const auto count_c = unmanaged( t.count_c );
     const physics::GridGeometry grid = gv.geometry;
+    // Below this share of a point's mass a node gives r* its start-of-step
+    // velocity (PredictorVelocity).
     const double predictor_mass_share = 0.01;
     forEachPointStencil(
         "mpm::pressure_point_terms", exec, pv, grid,
