@@ -9,11 +9,12 @@ MPM_TEST_BACKEND_SUITE( PressurePointTerms );
 
 // One saturated point of mass m_p in cell (1, 1) of 0.5 m cells, just above
 // the cell's lower edge: the cell's two upper nodes carry the point's mass
-// times a weight of 1e-4 / 2 each, below 1 % of it. Every node starts at rest
-// (v* = dv); the lower nodes move down by `lower_dv`, the upper ones by
-// `upper_dv` (the unbounded f / m of a sliver of mass). The right side of the
-// pressure equation at the cell's nodes, sum N V (source - r*) with source 0,
-// sums to V (-r*), and r* = S div v_s* = tr L (saturated, v_w = v_s).
+// times weights of 0.7e-4 and 0.3e-4 (eta (1 - xi), eta xi), below 1 % of it.
+// Every node starts at rest (v* = dv); the lower nodes move down by `lower_dv`,
+// the upper ones by `upper_dv` (the unbounded f / m of a sliver of mass). The
+// right side of the pressure equation at the cell's nodes, sum N V (source -
+// r*) with source 0, sums to V (-r*), and r* = S div v_s* = tr L (saturated,
+// v_w = v_s).
 template <class exec_space>
 double rightSideSum( const double lower_dv, const double upper_dv )
 {
@@ -87,8 +88,9 @@ TYPED_TEST( PressurePointTerms, r_star_takes_the_predictor_of_nodes_with_mass )
 TYPED_TEST( PressurePointTerms,
             r_star_ignores_the_acceleration_of_a_mass_sliver )
 {
-    // The upper nodes hold 5e-5 of the point's mass: their dv of 1e3 m/s
-    // (what a stress force on that sliver gives) would make r* 2,000 1/s.
+    // The upper nodes hold 0.7e-4 and 0.3e-4 of the point's mass: their dv
+    // of 1e3 m/s (what a stress force on that sliver gives) would add
+    // 2,000 1/s to r*.
     EXPECT_NEAR( rightSideSum<TypeParam>( -1.0, 1.0e3 ), -2.0, 1e-9 );
     EXPECT_NEAR( rightSideSum<TypeParam>( 0.0, 1.0e3 ), 0.0, 1e-9 );
 }
