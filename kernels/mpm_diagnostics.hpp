@@ -169,6 +169,32 @@ double maxDisplacement( const ExecSpace& exec_space,
         } );
 }
 
+/*!
+  \brief Initial area (vol0_p, m^3 per metre) of the active points that
+  have moved more than `displacement` (m) from where they started: the
+  size of a mechanism.
+*/
+template <class ExecSpace>
+double movedArea( const ExecSpace& exec_space,
+                  const ParticleViews<ExecSpace>& pv,
+                  const double displacement )
+{
+    const auto points = unmanaged( pv );
+    const double limit2 = displacement * displacement;
+    double area = 0.0;
+    Kokkos::parallel_reduce(
+        "mpm::moved_area",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, double& sum ) {
+            if ( points.status_p( p ) == point_active &&
+                 length2( points.x_p( p, 0 ) - points.x0_p( p, 0 ),
+                          points.x_p( p, 1 ) - points.x0_p( p, 1 ) ) > limit2 )
+                sum += points.vol0_p( p );
+        },
+        area );
+    return area;
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief Smallest index of an active point whose position, velocity,

@@ -162,13 +162,14 @@ void addFosOptions( CLI::App& command, mpm::FosOptions& fos )
         ->capture_default_str();
     positive( "--periods", c.periods,
               "trial length in periods of the slowest skeleton wave" );
-    positive( "--growth-ratio", c.growth_ratio,
-              "fails if the displacement grew by more than this fraction of "
-              "itself over the last quarter of a trial" );
     positive( "--displacement-limit-m", c.displacement_limit_m,
               "fails if a displacement exceeds this (m)" );
-    positive( "--moving-floor-m", c.moving_floor_m,
-              "displacements below this (m) are not growth" );
+    positive( "--creep-limit-m", c.creep_limit_m,
+              "fails if the largest displacement grew by more than this (m) "
+              "over the last quarter of a trial (and --energy-ratio holds)" );
+    positive( "--energy-ratio", c.energy_ratio,
+              "... while the mean kinetic energy of that quarter is above "
+              "this fraction of the trial's peak" );
 }
 } // namespace
 

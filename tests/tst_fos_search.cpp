@@ -118,27 +118,37 @@ TEST( FosSearch, stops_after_max_trials )
 //---------------------------------------------------------------------------//
 TEST( FosCriterion, verdicts_from_the_numbers )
 {
-    // The defaults: growth 1 %, limit 1 m, floor 1 mm.
+    // The defaults: limit 1 m; creep limit 1 mm a quarter with E_kin above
+    // 1e-5 of its peak.
     const mpm::FosCriterion c;
-    ASSERT_EQ( c.growth_ratio, 0.01 );
     ASSERT_EQ( c.displacement_limit_m, 1.0 );
-    ASSERT_EQ( c.moving_floor_m, 0.001 );
+    ASSERT_EQ( c.creep_limit_m, 0.001 );
+    ASSERT_EQ( c.energy_ratio, 1.0e-5 );
     mpm::FosTrialRecord r;
     // Came to rest.
     r.u_max_m = 0.05;
     r.u_three_quarters_m = 0.0499;
+    r.ke_ratio = 1.0e-4;
     mpm::judgeTrial( c, r );
     EXPECT_FALSE( r.fails );
     EXPECT_EQ( r.reason, "settled" );
-    EXPECT_NEAR( r.growth_ratio, 0.002, 1e-12 );
-    // Still growing.
-    r.u_three_quarters_m = 0.04;
+    EXPECT_NEAR( r.last_quarter_m, 1e-4, 1e-12 );
+    // Still moving: 3 mm in the last quarter, E_kin at 1e-4 of its peak
+    // (Griffiths-Lane's slope at 0.5 m cells, F = 1.375).
+    r.u_max_m = 0.103;
+    r.u_three_quarters_m = 0.1;
     mpm::judgeTrial( c, r );
     EXPECT_TRUE( r.fails );
     EXPECT_EQ( r.reason, "still_moving" );
-    // Growing, but below the floor: not a mechanism.
-    r.u_max_m = 0.0009;
-    r.u_three_quarters_m = 0.0001;
+    // The same growth with E_kin at 1e-7 of its peak: a residual drift.
+    r.ke_ratio = 1.0e-7;
+    mpm::judgeTrial( c, r );
+    EXPECT_FALSE( r.fails );
+    EXPECT_EQ( r.reason, "settled" );
+    // E_kin still high, but 0.5 mm a quarter: creep below the limit.
+    r.ke_ratio = 0.1;
+    r.u_max_m = 0.0015;
+    r.u_three_quarters_m = 0.001;
     mpm::judgeTrial( c, r );
     EXPECT_FALSE( r.fails );
     // Beyond the limit.
@@ -155,9 +165,9 @@ TEST( FosCriterion, verdicts_from_the_numbers )
     EXPECT_EQ( r.reason, "run_stopped" );
 
     const mpm::FosCriterion twice = c.scaled( 2.0 );
-    EXPECT_DOUBLE_EQ( twice.growth_ratio, 0.02 );
     EXPECT_DOUBLE_EQ( twice.displacement_limit_m, 2.0 );
-    EXPECT_DOUBLE_EQ( twice.moving_floor_m, 0.002 );
+    EXPECT_DOUBLE_EQ( twice.creep_limit_m, 0.002 );
+    EXPECT_DOUBLE_EQ( twice.energy_ratio, 2.0e-5 );
     EXPECT_DOUBLE_EQ( twice.damping, c.damping );
     EXPECT_DOUBLE_EQ( twice.periods, c.periods );
 }
@@ -198,7 +208,8 @@ TEST( FosCriterion, strength_reduction )
     EXPECT_DOUBLE_EQ( mpm::reducedStrength( m, 2.0 ).cohesion_peak_pa, 20e3 );
 }
 
-TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain_and_k0 )
+TEST( FosCriterion,
+      trial_stage_holds_and_locks_the_water_and_drops_the_rain_and_k0 )
 {
     mpm::StageConfig base;
     base.type = mpm::StageType::QuasiStatic;
@@ -210,6 +221,7 @@ TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain_and_k0 )
     mpm::MaterialConfig m;
     m.model = mpm::ModelType::MohrCoulomb;
     m.cohesion_peak_pa = 10e3;
+    m.permeability_m2 = 4.5e-9;
     base.materials = { m };
     const mpm::StageConfig wet = mpm::fosTrialStage( base, true, 2.0, 0.7 );
     EXPECT_EQ( wet.type, mpm::StageType::Dynamic );
@@ -222,6 +234,9 @@ TEST( FosCriterion, trial_stage_holds_the_water_and_drops_the_rain_and_k0 )
     EXPECT_EQ( wet.pore_pressures[0].points.kind,
                mpm::PointSelection::Kind::All );
     EXPECT_DOUBLE_EQ( wet.materials[0].cohesion_peak_pa, 5e3 );
-    EXPECT_TRUE(
-        mpm::fosTrialStage( base, false, 2.0, 0.7 ).pore_pressures.empty() );
+    // The water is locked to the skeleton (no flow through the held p_w).
+    EXPECT_EQ( wet.materials[0].permeability_m2, 0.0 );
+    const mpm::StageConfig dry = mpm::fosTrialStage( base, false, 2.0, 0.7 );
+    EXPECT_TRUE( dry.pore_pressures.empty() );
+    EXPECT_DOUBLE_EQ( dry.materials[0].permeability_m2, 4.5e-9 );
 }

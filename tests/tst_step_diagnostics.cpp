@@ -145,4 +145,34 @@ TYPED_TEST( StepDiagnostics, non_finite_strain_is_unsound )
     }
 }
 
+//---------------------------------------------------------------------------//
+// The size of a mechanism (strength-reduction trials): the initial area of
+// the active points displaced more than a threshold.
+TYPED_TEST( StepDiagnostics, moved_area_sums_the_displaced_points )
+{
+    mpm::Simulation<TypeParam> sim( unsaturatedColumn( false ) );
+    auto x = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
+                                                  sim.particles.x_p );
+    auto status = Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(),
+                                                       sim.particles.status_p );
+    const auto vol0 = Kokkos::create_mirror_view_and_copy(
+        Kokkos::HostSpace(), sim.particles.vol0_p );
+    ASSERT_GE( x.extent( 0 ), 6u );
+    // Points 0-2 move 2 mm along x, 3 moves 2 mm along y and is removed,
+    // 4 moves 0.5 mm.
+    for ( int p = 0; p < 3; ++p )
+        x( p, 0 ) += 0.002;
+    x( 3, 1 ) -= 0.002;
+    status( 3 ) = mpm::point_removed;
+    x( 4, 0 ) += 0.0005;
+    Kokkos::deep_copy( sim.particles.x_p, x );
+    Kokkos::deep_copy( sim.particles.status_p, status );
+    sim.stateChanged();
+    const double area = vol0( 0 ) + vol0( 1 ) + vol0( 2 );
+    EXPECT_NEAR( sim.movedArea( 0.001 ), area, 1e-14 * area );
+    EXPECT_NEAR( sim.movedArea( 0.0001 ), area + vol0( 4 ), 1e-14 * area );
+    EXPECT_EQ( sim.movedArea( 0.003 ), 0.0 );
+    EXPECT_NEAR( sim.maxDisplacement(), 0.002, 1e-12 );
+}
+
 } // namespace

@@ -9,17 +9,16 @@ namespace mpm
 FosCriterion FosCriterion::scaled( const double factor ) const
 {
     FosCriterion c = *this;
-    c.growth_ratio *= factor;
     c.displacement_limit_m *= factor;
-    c.moving_floor_m *= factor;
+    c.creep_limit_m *= factor;
+    c.energy_ratio *= factor;
     return c;
 }
 
 //---------------------------------------------------------------------------//
 void judgeTrial( const FosCriterion& criterion, FosTrialRecord& record )
 {
-    const double growth = record.u_max_m - record.u_three_quarters_m;
-    record.growth_ratio = record.u_max_m > 0.0 ? growth / record.u_max_m : 0.0;
+    record.last_quarter_m = record.u_max_m - record.u_three_quarters_m;
     if ( !record.error.empty() )
     {
         record.fails = true;
@@ -30,8 +29,8 @@ void judgeTrial( const FosCriterion& criterion, FosTrialRecord& record )
         record.fails = true;
         record.reason = "displacement_limit";
     }
-    else if ( record.u_max_m > criterion.moving_floor_m &&
-              record.growth_ratio > criterion.growth_ratio )
+    else if ( record.last_quarter_m > criterion.creep_limit_m &&
+              record.ke_ratio > criterion.energy_ratio )
     {
         record.fails = true;
         record.reason = "still_moving";
@@ -70,10 +69,14 @@ std::string describeCriterion( const FosCriterion& c )
     s << "damped run (local damping " << c.damping << ") of " << c.periods
       << " periods of the slowest skeleton wave over the bodies (4 L / c "
          "sqrt(inertia scaling)) with c and tan(phi) divided by F and the "
-         "pore pressures held; fails if the largest displacement exceeds "
-      << c.displacement_limit_m << " m, or if it exceeds " << c.moving_floor_m
-      << " m and grew by more than " << c.growth_ratio
-      << " of itself over the last quarter of the run, or if the run stops "
+         "pore pressures held (the water locked to the skeleton); fails if "
+         "the largest displacement exceeds "
+      << c.displacement_limit_m << " m, or if it grew by more than "
+      << c.creep_limit_m
+      << " m over the last quarter of the run while the mean kinetic energy "
+         "of that quarter was above "
+      << c.energy_ratio
+      << " of the trial's peak, or if the run stops "
          "(a point leaves the grid, an instability)";
     return s.str();
 }
@@ -81,12 +84,20 @@ std::string describeCriterion( const FosCriterion& c )
 //---------------------------------------------------------------------------//
 // The record's numbers under their own names (to_json).
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE( FosTrialRecord, factor, reason, u_max_m,
-                                    u_three_quarters_m, growth_ratio, ke_ratio,
-                                    duration_s, steps, wall_s )
+                                    u_three_quarters_m, last_quarter_m,
+                                    ke_ratio, duration_s, steps, wall_s )
 
 nlohmann::json trialJson( const FosTrialRecord& r )
 {
     nlohmann::json j = r;
+    nlohmann::json& h = j["history"];
+    for ( const FosTrialSample& s : r.history )
+    {
+        h["t_s"].push_back( s.t_s );
+        h["u_max_m"].push_back( s.u_max_m );
+        h["e_kin_j"].push_back( s.e_kin_j );
+        h["moved_area_m2"].push_back( s.moved_area_m2 );
+    }
     j["verdict"] = r.fails ? "fails" : "stable";
     if ( !r.error.empty() )
         j["error"] = r.error;

@@ -81,12 +81,12 @@ FosReport searchFos( Simulation<ExecSpace>& sim, const CaseConfig& config,
         }
         if ( !quiet )
             std::fprintf( stderr,
-                          "fos: F = %.4f %s (%s): u_max %.4g m, growth in "
-                          "the last quarter %.3g, E_kin ratio %.3g, %ld "
+                          "fos: F = %.4f %s (%s): u_max %.4g m, %.3g m in "
+                          "the last quarter, E_kin ratio %.3g, %ld "
                           "steps, %.1f s\n",
                           factor, record.fails ? "fails" : "stable",
                           record.reason.c_str(), record.u_max_m,
-                          record.growth_ratio, record.ke_ratio, record.steps,
+                          record.last_quarter_m, record.ke_ratio, record.steps,
                           record.wall_s );
         report.trials.push_back( record );
         return FosVerdict{ record.fails };
@@ -120,13 +120,14 @@ inline nlohmann::json fosJson( const CaseConfig& config,
             { "damping", options.criterion.damping },
             { "periods", options.criterion.periods },
             { "trial_duration_s", report.trial_duration_s },
-            { "growth_ratio", options.criterion.growth_ratio },
             { "displacement_limit_m", options.criterion.displacement_limit_m },
-            { "moving_floor_m", options.criterion.moving_floor_m } } },
+            { "creep_limit_m", options.criterion.creep_limit_m },
+            { "energy_ratio", options.criterion.energy_ratio } } },
         { "strength_reduction",
           "c_peak, c_residual, the softening modulus and the tensile "
           "strength divided by F; tan(phi) and tan(psi) divided by F; pore "
-          "pressures held at their values at the start of every trial" },
+          "pressures held at their values at the start of every trial, the "
+          "water locked to the skeleton (permeability 0)" },
         { "wall_s", wall_s } };
     j["trials"] = nlohmann::json::array();
     for ( const FosTrialRecord& r : report.trials )

@@ -21,7 +21,13 @@ namespace mpm
   case (its gravity, boundaries and loads) with every material's strength
   divided by `factor` (reducedStrength), no inflow, no static stop, and,
   in a two-phase scene, every point's p_w held at its value at the trial
-  start (so S and the suction are frozen too).
+  start (so S and the suction are frozen too) and the water locked to the
+  skeleton (permeability 0): a reduction with given pore pressures, whose
+  gradient still loads the skeleton through the mixture's balance. Free
+  water would flow through the held field, which is not in equilibrium
+  (an infiltrating front), and its drag kept the skeleton drifting at
+  1e-5 - 1e-4 m/s at every F (docs/slope-study.md, "The failure
+  criterion").
 */
 inline StageConfig fosTrialStage( const StageConfig& base, const bool two_phase,
                                   const double factor, const double damping )
@@ -45,9 +51,43 @@ inline StageConfig fosTrialStage( const StageConfig& base, const bool two_phase,
         stage.pore_pressures.push_back( hold );
     }
     for ( MaterialConfig& m : stage.materials )
+    {
         m = reducedStrength( m, factor );
+        if ( two_phase )
+            m.permeability_m2 = 0.0;
+    }
     return stage;
 }
+
+//---------------------------------------------------------------------------//
+//! The kinetic energy of a trial: its peak and its mean over the last
+//! quarter (time-weighted), for FosTrialRecord::ke_ratio.
+struct TrialKineticEnergy
+{
+    double peak = 0.0;
+    double last = 0.0;
+    double late_integral = 0.0; //!< integral of E_kin dt in the last quarter
+    double late_time = 0.0;
+
+    void add( const double ke, const double dt, const bool late )
+    {
+        peak = std::max( peak, ke );
+        last = ke;
+        if ( late )
+        {
+            late_integral += ke * dt;
+            late_time += dt;
+        }
+    }
+
+    //! Mean over the last quarter (the last value if the trial stopped
+    //! before it) over the peak.
+    double ratio() const
+    {
+        const double late = late_time > 0.0 ? late_integral / late_time : last;
+        return peak > 0.0 ? late / peak : 0.0;
+    }
+};
 
 //---------------------------------------------------------------------------//
 /*!
@@ -92,14 +132,25 @@ class FosTrialRunner
         _sim.applyStage( fosTrialStage( _base, _sim.twoPhase(), factor,
                                         _criterion.damping ) );
         _sim.resetDisplacement();
+        if ( _sim.twoPhase() ) // the locked water starts with the skeleton
+            Kokkos::deep_copy( _sim.water_particles.v_w_p, _sim.particles.v_p );
         _sim.stateChanged();
         const StepSettings settings{ _base.gravity_m_per_s2[0],
                                      _base.gravity_m_per_s2[1],
                                      _criterion.damping };
         const double total = duration();
         const double three_quarters = 0.75 * total;
-        double t = 0.0, ke_max = 0.0, ke = 0.0;
+        double t = 0.0;
+        TrialKineticEnergy energy;
         bool past_three_quarters = false;
+        const int num_samples = 20;
+        int next_sample = 1;
+        const auto sample = [&]()
+        {
+            record.history.push_back(
+                { t, _sim.maxDisplacement(), _sim.kineticEnergy(),
+                  _sim.movedArea( _criterion.creep_limit_m ) } );
+        };
         // The displacement limit is checked every few steps (a reduction).
         const long check_every = 10;
         try
@@ -113,8 +164,13 @@ class FosTrialRunner
                 _sim.checkStability( dt, limit );
                 t += dt;
                 ++record.steps;
-                ke = _sim.kineticEnergy();
-                ke_max = std::max( ke_max, ke );
+                energy.add( _sim.kineticEnergy(), dt, past_three_quarters );
+                if ( t >=
+                     next_sample * total / num_samples * ( 1.0 - 1.0e-12 ) )
+                {
+                    sample();
+                    ++next_sample;
+                }
                 if ( !past_three_quarters && t >= three_quarters )
                 {
                     record.u_three_quarters_m = _sim.maxDisplacement();
@@ -129,11 +185,13 @@ class FosTrialRunner
         {
             record.error = error.what();
         }
+        if ( record.history.empty() || record.history.back().t_s < t )
+            sample(); // the trial stopped early
         record.duration_s = t;
         record.u_max_m = _sim.maxDisplacement();
         if ( !past_three_quarters )
             record.u_three_quarters_m = record.u_max_m;
-        record.ke_ratio = ke_max > 0.0 ? ke / ke_max : 0.0;
+        record.ke_ratio = energy.ratio();
         judgeTrial( _criterion, record );
         if ( end_state )
             *end_state = hostSnapshot( _sim );

@@ -261,6 +261,13 @@ class Simulation
         return mpm::maxDisplacement( ExecSpace(), particles );
     }
 
+    //! Initial area of the active points displaced more than
+    //! `displacement` (m), m^2 per metre (movedArea).
+    double movedArea( const double displacement ) const
+    {
+        return mpm::movedArea( ExecSpace(), particles, displacement );
+    }
+
     /*!
       \brief Declares the point state changed outside advance (fields
       written directly): the step's diagnostics and the stored retention

@@ -166,8 +166,8 @@ TEST( FosGriffithsLane, two_cell_sizes_agree_with_bishop )
     EXPECT_LT( std::abs( found[0] - found[1] ), 0.075 );
 }
 
-// The criterion's thresholds (growth ratio, displacement limit, moving
-// floor) halved and doubled: the factor moves by at most one bracket.
+// The criterion's thresholds (displacement and creep limits) halved and
+// doubled: the factor moves by at most one bracket.
 TEST( FosGriffithsLane, insensitive_to_the_criterion_thresholds )
 {
     const mpm::CaseConfig config = griffithsLane( 1.0 );
@@ -207,9 +207,24 @@ TEST( FosCli, writes_fos_json_and_the_mechanism )
         const bool fails = t.at( "verdict" ) == "fails";
         ( fails ? saw_failing : saw_stable ) = true;
         EXPECT_EQ( fails, t.at( "factor" ).get<double>() >= failing );
-        for ( const char* key : { "u_max_m", "u_three_quarters_m",
-                                  "growth_ratio", "ke_ratio", "reason" } )
+        for ( const char* key :
+              { "u_max_m", "u_three_quarters_m", "last_quarter_m", "ke_ratio",
+                "reason", "history" } )
             EXPECT_TRUE( t.contains( key ) ) << key;
+        // 20 samples (fewer if the trial stopped at the displacement
+        // limit), the last at the trial's end.
+        const auto& history = t.at( "history" );
+        const std::size_t samples = history.at( "t_s" ).size();
+        ASSERT_GE( samples, 1u );
+        EXPECT_LE( samples, 20u );
+        if ( t.at( "reason" ) != "displacement_limit" )
+        {
+            EXPECT_EQ( samples, 20u );
+        }
+        EXPECT_DOUBLE_EQ( history.at( "t_s" ).back().get<double>(),
+                          t.at( "duration_s" ).get<double>() );
+        EXPECT_DOUBLE_EQ( history.at( "u_max_m" ).back().get<double>(),
+                          t.at( "u_max_m" ).get<double>() );
     }
     EXPECT_TRUE( saw_stable && saw_failing );
     EXPECT_TRUE( j.at( "criterion" ).contains( "text" ) );
