@@ -82,22 +82,34 @@ KOKKOS_INLINE_FUNCTION double speed2( const Points& points, const int p )
 }
 
 //---------------------------------------------------------------------------//
+//! Sum of term(p) over the active points, as a Value.
+template <class Value, class ExecSpace, class Term>
+Value sumOverActivePoints( const ExecSpace& exec_space, const char* label,
+                           const ParticleViews<ExecSpace>& pv,
+                           const Term& term )
+{
+    const auto points = unmanaged( pv );
+    Value total = 0;
+    Kokkos::parallel_reduce(
+        label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p, Value& sum ) {
+            if ( points.status_p( p ) == point_active )
+                sum += term( p );
+        },
+        total );
+    return total;
+}
+
 //! Total kinetic energy sum 0.5 m_p |v_p|^2, J (per metre out of plane).
 template <class ExecSpace>
 double kineticEnergy( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
     const auto points = unmanaged( pv );
-    double energy = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::kinetic_energy",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& sum ) {
-            if ( points.status_p( p ) == point_active )
-                sum += 0.5 * points.m_p( p ) * speed2( points, p );
-        },
-        Kokkos::Sum<double>( energy ) );
-    return energy;
+    return sumOverActivePoints<double>(
+        exec_space, "mpm::kinetic_energy", pv, KOKKOS_LAMBDA( const int p ) {
+            return 0.5 * points.m_p( p ) * speed2( points, p );
+        } );
 }
 
 //---------------------------------------------------------------------------//
@@ -143,17 +155,11 @@ long countPointsNotBelowSpeed( const ExecSpace& exec_space,
 {
     const auto points = unmanaged( pv );
     const double limit2 = speed * speed;
-    long count = 0;
-    Kokkos::parallel_reduce(
-        "mpm::count_points_not_below_speed",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, long& n ) {
-            if ( points.status_p( p ) == point_active &&
-                 !( speed2( points, p ) < limit2 ) )
-                ++n;
-        },
-        count );
-    return count;
+    return sumOverActivePoints<long>(
+        exec_space, "mpm::count_points_not_below_speed", pv,
+        KOKKOS_LAMBDA( const int p ) {
+            return !( speed2( points, p ) < limit2 ) ? 1L : 0L;
+        } );
 }
 
 //! Largest displacement |x_p - x0_p| over the active points, m.
@@ -181,18 +187,13 @@ double movedArea( const ExecSpace& exec_space,
 {
     const auto points = unmanaged( pv );
     const double limit2 = displacement * displacement;
-    double area = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::moved_area",
-        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& sum ) {
-            if ( points.status_p( p ) == point_active &&
-                 length2( points.x_p( p, 0 ) - points.x0_p( p, 0 ),
-                          points.x_p( p, 1 ) - points.x0_p( p, 1 ) ) > limit2 )
-                sum += points.vol0_p( p );
-        },
-        area );
-    return area;
+    return sumOverActivePoints<double>(
+        exec_space, "mpm::moved_area", pv, KOKKOS_LAMBDA( const int p ) {
+            const bool moved =
+                length2( points.x_p( p, 0 ) - points.x0_p( p, 0 ),
+                         points.x_p( p, 1 ) - points.x0_p( p, 1 ) ) > limit2;
+            return moved ? points.vol0_p( p ) : 0.0;
+        } );
 }
 
 //---------------------------------------------------------------------------//

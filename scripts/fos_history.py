@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Factor of safety against time, with the wetting front, from `rainslide fos --every-s`.
 
-Usage: fos_history.py DIR [--columns X ...] [--half-width-m W] [--wet-pa P] [--out PNG]
+Usage: fos_history.py DIR [--columns X ...] [--half-width-m W] [--wet-pa P]
+                      [--with DIR ...] [--out PNG]
 
 Reads DIR/fos_history.json (one row per search), DIR/states.h5 (the searched
 states) and DIR/t_*/mechanism.h5. For every search time it gives the factor
@@ -11,7 +12,8 @@ above --wet-pa, default -25 kPa: half the slope's initial suction lost) and
 where the mechanism of the smallest failing F is (the x range and the
 deepest point of the points that moved more than a tenth of the largest
 displacement). Writes DIR/fos_history.png (FS and the front depths against
-time) and DIR/fos_history.md (the table), and prints the table. Errors in
+time; with --with, also the FS of other histories, e.g. the phi and c_r
+variants) and DIR/fos_history.md (the table), and prints the table. Errors in
 the input give one line "fos_history: error: ..." and exit code 2.
 """
 import argparse
@@ -78,6 +80,25 @@ def mechanism_extent(path):
             float(x0[moved, 1].min()), float(u.max()))
 
 
+def fos_series(folder):
+    """(case name, stage times, FS) of the history in `folder`; NaN where
+    no factor was found."""
+    history = read_json(os.path.join(folder, "fos_history.json"))
+    rows = history.get("rows")
+    if not isinstance(rows, list) or not rows:
+        fail(f"{folder}/fos_history.json: no rows (did a search finish?)")
+    times, factors = [], []
+    for k, row in enumerate(rows):
+        t = row.get("stage_time_s") if isinstance(row, dict) else None
+        if not isinstance(t, (int, float)):
+            fail(f"{folder}/fos_history.json: rows[{k}].stage_time_s: "
+                 f"expected a number of seconds, found {t!r}")
+        fs = row.get("factor_of_safety")
+        times.append(float(t))
+        factors.append(float(fs) if isinstance(fs, (int, float)) else np.nan)
+    return history.get("case", folder), np.array(times), np.array(factors)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dir")
@@ -87,8 +108,11 @@ def main():
                         help="points within this of a column's x belong to it (m)")
     parser.add_argument("--wet-pa", type=float, default=-25.0e3,
                         help="p_w above which a point counts as wetted (Pa)")
+    parser.add_argument("--with", dest="others", nargs="+", default=[],
+                        metavar="DIR", help="also draw the FS of these histories")
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
+    others = [fos_series(folder) for folder in args.others]
     history = read_json(os.path.join(args.dir, "fos_history.json"))
     rows = history.get("rows")
     if not isinstance(rows, list) or not rows:
@@ -136,14 +160,18 @@ def main():
     t = np.array([r[0] for r in table])
     fs = np.array([np.nan if r[1] is None else r[1] for r in table])
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    ax.plot(t, fs, "ko-", label="factor of safety")
+    case = history.get("case", "")
+    ax.plot(t, fs, "ko-", label=f"FS, {case}" if others else "factor of safety")
+    for k, (name, other_t, other_fs) in enumerate(others):
+        ax.plot(other_t, other_fs, "o-", ms=4, color=f"C{k}", label=f"FS, {name}")
     ax.axhline(1.0, color="r", lw=0.8, ls="--")
     ax.set_xlabel("time since the rain began (s)")
     ax.set_ylabel("factor of safety (strength reduction)")
-    ax.set_title(f"{history.get('case', '')}: FS and the wetting front")
+    ax.set_title(f"{case}: FS and the wetting front")
     depth_ax = ax.twinx()
     for k, c in enumerate(args.columns):
         depth_ax.plot(t, [r[3][k] for r in table], "s--", ms=3,
+                      color=str(0.35 + 0.3 * k / max(1, len(args.columns) - 1)),
                       label=f"wetting front at x = {c:g} m")
     depth_ax.set_ylabel(f"depth of p_w >= {args.wet_pa / 1e3:g} kPa (m)")
     handles = ax.get_legend_handles_labels()

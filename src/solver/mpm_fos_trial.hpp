@@ -139,11 +139,11 @@ class FosTrialRunner
                                      _base.gravity_m_per_s2[1],
                                      _criterion.damping };
         const double total = duration();
-        const double three_quarters = 0.75 * total;
         double t = 0.0;
         TrialKineticEnergy energy;
         bool past_three_quarters = false;
         const int num_samples = 20;
+        const int three_quarters_sample = 15; // at 3/4 of the trial
         int next_sample = 1;
         const auto sample = [&]()
         {
@@ -169,12 +169,13 @@ class FosTrialRunner
                      next_sample * total / num_samples * ( 1.0 - 1.0e-12 ) )
                 {
                     sample();
+                    if ( next_sample == three_quarters_sample )
+                    {
+                        record.u_three_quarters_m =
+                            record.history.back().u_max_m;
+                        past_three_quarters = true;
+                    }
                     ++next_sample;
-                }
-                if ( !past_three_quarters && t >= three_quarters )
-                {
-                    record.u_three_quarters_m = _sim.maxDisplacement();
-                    past_three_quarters = true;
                 }
                 if ( record.steps % check_every == 0 &&
                      _sim.maxDisplacement() > _criterion.displacement_limit_m )

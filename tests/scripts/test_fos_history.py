@@ -80,6 +80,31 @@ class FosHistoryTest(unittest.TestCase):
             self.assertIn("FS first below 1 at t = 5.00 s", result.stdout)
             self.assertTrue(os.path.isfile(os.path.join(folder, "fos_history.png")))
 
+    def test_other_histories_on_the_same_plot(self):
+        with tempfile.TemporaryDirectory() as folder, \
+                tempfile.TemporaryDirectory() as variant:
+            self.make_history(folder)
+            rows = [{"stage_time_s": 0.0, "factor_of_safety": 1.5},
+                    {"stage_time_s": 5.0, "factor_of_safety": None}]
+            with open(os.path.join(variant, "fos_history.json"), "w") as f:
+                json.dump({"case": "variant", "rows": rows}, f)
+            out = os.path.join(folder, "both.png")
+            result = run_script("fos_history.py", folder, "--columns", "7.5",
+                                "--with", variant, "--out", out)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertTrue(os.path.isfile(out))
+            # A row without its time is named, before any figure is drawn.
+            rows[1].pop("stage_time_s")
+            with open(os.path.join(variant, "fos_history.json"), "w") as f:
+                json.dump({"case": "variant", "rows": rows}, f)
+            os.remove(out)
+            result = run_script("fos_history.py", folder, "--with", variant,
+                                "--out", out)
+            self.assertEqual(result.returncode, 2)
+            self.assertIn("rows[1].stage_time_s: expected a number of seconds, found None",
+                          result.stderr)
+            self.assertFalse(os.path.exists(out))
+
     def test_missing_history_exits_2(self):
         with tempfile.TemporaryDirectory() as folder:
             result = run_script("fos_history.py", folder)
