@@ -207,37 +207,52 @@ int runFosHistory( const CaseConfig& case_config, const RunOptions& run,
         }
     };
     StageLoopState loop;
-    while ( true )
+    try
     {
-        RunSummary summary;
-        try
+        while ( true )
         {
-            summary = runStages( sim, config, observer, loop );
-        }
-        catch ( const SimulationError& error )
-        {
+            RunSummary summary;
+            try
+            {
+                summary = runStages( sim, config, observer, loop );
+            }
+            catch ( const SimulationError& error )
+            {
+                printer.finish();
+                std::cerr << "rainslide: error: the run stopped\n"
+                          << error.what() << "\n";
+                return 1;
+            }
             printer.finish();
-            std::cerr << "rainslide: error: the run stopped\n"
-                      << error.what() << "\n";
-            return 1;
+            std::optional<Checkpoint> state = observer.takeState();
+            if ( !state )
+            {
+                if ( summary.interrupted )
+                    return 130;
+                // The stage's end, if it is a search time.
+                const RunProgress at = observer.lastProgress();
+                if ( observer.dueAt( at ) )
+                    search( sim, at );
+                states.finalize();
+                return 0;
+            }
+            Simulation<ExecSpace> copy( config );
+            restoreCheckpoint( copy, config, *state );
+            search( copy, state->loop.progress );
+            loop = state->loop;
         }
+    }
+    catch ( const FosInterrupted& stop )
+    {
         printer.finish();
-        std::optional<Checkpoint> state = observer.takeState();
-        if ( !state )
-        {
-            if ( summary.interrupted )
-                return 130;
-            // The stage's end, if it is a search time.
-            const RunProgress at = observer.lastProgress();
-            if ( observer.dueAt( at ) )
-                search( sim, at );
-            states.finalize();
-            return 0;
-        }
-        Simulation<ExecSpace> copy( config );
-        restoreCheckpoint( copy, config, *state );
-        search( copy, state->loop.progress );
-        loop = state->loop;
+        const std::size_t finished = history["rows"].size();
+        std::cerr << "rainslide: " << stop.what() << "; "
+                  << ( finished ? "fos_history.json holds the " +
+                                      std::to_string( finished ) +
+                                      " searches finished before"
+                                : std::string( "no search had finished" ) )
+                  << "\n";
+        return 130;
     }
 }
 

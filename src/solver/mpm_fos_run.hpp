@@ -256,8 +256,16 @@ int runFos( const CaseConfig& config, const RunOptions& run,
             return 1;
         }
     }
-    FosReport report =
-        searchFos( sim, config, base_stage, options, !run.progress );
+    FosReport report;
+    try
+    {
+        report = searchFos( sim, config, base_stage, options, !run.progress );
+    }
+    catch ( const FosInterrupted& stop )
+    {
+        std::cerr << "rainslide: " << stop.what() << "; no fos.json written\n";
+        return 130;
+    }
     if ( !run.restart_file.empty() )
         report.state_from = run.restart_file;
     const double wall_s = std::chrono::duration<double>(

@@ -5,16 +5,29 @@
 #include <io/mpm_checkpoint.hpp>
 #include <solver/mpm_checkpoint_state.hpp>
 #include <solver/mpm_fos_criterion.hpp>
+#include <solver/mpm_progress.hpp>
 #include <solver/mpm_run_stages.hpp>
 #include <solver/mpm_simulation.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 
 namespace mpm
 {
+//! Thrown by a trial at its next step once Ctrl-C (SIGINT/SIGTERM) is
+//! requested: the search stops there and writes no result.
+struct FosInterrupted : std::runtime_error
+{
+    explicit FosInterrupted( const double factor )
+        : std::runtime_error( "interrupted in the trial at F = " +
+                              std::to_string( factor ) )
+    {
+    }
+};
+
 //---------------------------------------------------------------------------//
 /*!
   \brief The stage a strength-reduction trial runs: stage `base` of the
@@ -157,6 +170,8 @@ class FosTrialRunner
         {
             while ( t < total * ( 1.0 - 1.0e-12 ) )
             {
+                if ( interruptRequested() )
+                    throw FosInterrupted( factor );
                 const WaveSpeedLimit limit = _sim.waveSpeedLimit();
                 const double dt =
                     std::min( chooseTimeStep( _sim.solver, limit ), total - t );

@@ -16,11 +16,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -264,6 +266,41 @@ TEST( FosCli, searches_from_a_checkpoint )
                                    ( dir / "other" ).string() );
     EXPECT_EQ( result.exit_code, 2 ) << result.output;
     EXPECT_FALSE( std::filesystem::exists( dir / "other" / "fos.json" ) );
+}
+
+// Ctrl-C in a trial stops the search at the trial's next step: exit 130,
+// no fos.json. The trial is made long (2,000 periods: minutes) and the
+// signal sent 3 s after the start, the checkpoint's state restored at
+// once; a search that let the trial finish would be killed 30 s later.
+TEST( FosCli, ctrl_c_in_a_trial_stops_the_search )
+{
+    const auto dir = mpm_test::freshTempDir( "fos_cli_interrupt" );
+    const std::string case_file =
+        std::string( RAINSLIDE_CASES_DIR ) + "/fos_griffiths_lane.toml";
+    const auto ran = mpm_test::runCommand( mpm_test::runArgs(
+        case_file, dir / "run", " --quiet --checkpoint-every-s 1.0" ) );
+    ASSERT_EQ( ran.exit_code, 0 ) << ran.output;
+    const auto log = dir / "fos.log";
+    const std::string command =
+        "timeout --preserve-status -k 30 -s INT 3 " +
+        std::string( RAINSLIDE_BINARY ) + " fos " + case_file + " --restart " +
+        ( dir / "run" / "checkpoint.h5" ).string() + " --out " +
+        ( dir / "fos" ).string() + " --backend serial --periods 2000 > " +
+        log.string() + " 2>&1";
+    const auto start = std::chrono::steady_clock::now();
+    const int status = std::system( command.c_str() );
+    const double wall_s = std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - start )
+                              .count();
+    std::ifstream in( log );
+    std::stringstream output;
+    output << in.rdbuf();
+    EXPECT_EQ( WEXITSTATUS( status ), 130 ) << output.str();
+    EXPECT_LT( wall_s, 15.0 ) << output.str();
+    EXPECT_NE( output.str().find( "interrupted in the trial at F = " ),
+               std::string::npos )
+        << output.str();
+    EXPECT_FALSE( std::filesystem::exists( dir / "fos" / "fos.json" ) );
 }
 
 // A history (--every-s) of a slope that stays at rest: a search at the
