@@ -80,13 +80,19 @@ def mechanism_extent(path):
             float(x0[moved, 1].min()), float(u.max()))
 
 
-def fos_series(folder):
-    """(case name, stage times, FS) of the history in `folder`; NaN where
-    no factor was found."""
+def read_history(folder):
+    """The document `folder`/fos_history.json and its rows (at least one)."""
     history = read_json(os.path.join(folder, "fos_history.json"))
     rows = history.get("rows")
     if not isinstance(rows, list) or not rows:
         fail(f"{folder}/fos_history.json: no rows (did a search finish?)")
+    return history, rows
+
+
+def fos_series(folder):
+    """(case name, stage times, FS) of the history in `folder`; NaN where
+    no factor was found."""
+    history, rows = read_history(folder)
     times, factors = [], []
     for k, row in enumerate(rows):
         t = row.get("stage_time_s") if isinstance(row, dict) else None
@@ -113,10 +119,7 @@ def main():
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
     others = [fos_series(folder) for folder in args.others]
-    history = read_json(os.path.join(args.dir, "fos_history.json"))
-    rows = history.get("rows")
-    if not isinstance(rows, list) or not rows:
-        fail(f"{args.dir}/fos_history.json: no rows (did a search finish?)")
+    history, rows = read_history(args.dir)
     states = read_states(os.path.join(args.dir, "states.h5"))
     if len(states) < len(rows):
         fail(f"{args.dir}/states.h5: {len(states)} states for {len(rows)} rows")
