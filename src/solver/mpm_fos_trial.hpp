@@ -154,10 +154,12 @@ class FosTrialRunner
         const double total = duration();
         double t = 0.0;
         TrialKineticEnergy energy;
-        bool past_three_quarters = false;
         const int num_samples = 20;
         const int three_quarters_sample = 15; // at 3/4 of the trial
         int next_sample = 1;
+        // Past sample 15 the last quarter has begun.
+        const auto in_last_quarter = [&]
+        { return next_sample > three_quarters_sample; };
         const auto sample = [&]()
         {
             record.history.push_back(
@@ -179,17 +181,14 @@ class FosTrialRunner
                 _sim.checkStability( dt, limit );
                 t += dt;
                 ++record.steps;
-                energy.add( _sim.kineticEnergy(), dt, past_three_quarters );
+                energy.add( _sim.kineticEnergy(), dt, in_last_quarter() );
                 if ( t >=
                      next_sample * total / num_samples * ( 1.0 - 1.0e-12 ) )
                 {
                     sample();
                     if ( next_sample == three_quarters_sample )
-                    {
                         record.u_three_quarters_m =
                             record.history.back().u_max_m;
-                        past_three_quarters = true;
-                    }
                     ++next_sample;
                 }
                 if ( record.steps % check_every == 0 &&
@@ -205,7 +204,7 @@ class FosTrialRunner
             sample(); // the trial stopped early
         record.duration_s = t;
         record.u_max_m = _sim.maxDisplacement();
-        if ( !past_three_quarters )
+        if ( !in_last_quarter() )
             record.u_three_quarters_m = record.u_max_m;
         record.ke_ratio = energy.ratio();
         judgeTrial( _criterion, record );
