@@ -140,11 +140,14 @@ inline double joukowsky( const double seepage_momentum )
   reaches the base (the lowest point's p_w first >= 0); the largest p_w
   over the stage, and over its hydrostatic value plus Joukowsky's pressure
   of the largest seepage momentum rho_w n S |v_w - v_s| of a point in the
-  last 0.25 s (hammer_ratio); the time the layer has filled (filled_s: no
-  point below -2 % of rho_w g 5 m, an unsaturated pocket); the peak ratio
-  from 1 s before the settled checks, which run from `settle_s` after the
-  arrival and 0.5 s after the filling (and not before `settled_from_s`) to
-  the end.
+  last 0.25 s (hammer_ratio); the time the layer has filled for good
+  (filled_s: from then to the stage end no point lies below -2 % of
+  rho_w g 5 m, an unsaturated pocket; a pocket can linger just below that
+  and drain over a second or more, so the first time no point does is not
+  enough); the peak ratio from 1 s before the settled checks, which run
+  from `settle_s` after the arrival and 0.5 s after the filling (and not
+  before `settled_from_s`) to the end. The checks are kept and summed up
+  at the rain stage's end.
 */
 template <class ExecSpace>
 class WettingHistory : public mpm::RunObserver
@@ -193,24 +196,39 @@ class WettingHistory : public mpm::RunObserver
                                                   joukowsky( recent ) ) );
         if ( arrival_s < 0.0 && lowest_p >= 0.0 )
             arrival_s = progress.stage_time_s;
-        if ( arrival_s < 0.0 )
+        if ( arrival_s >= 0.0 )
+            _checks.push_back( { progress.stage_time_s, p_min, check } );
+    }
+    void onStageEnd( const mpm::RunProgress& progress,
+                     const mpm::StageSummary& ) override
+    {
+        if ( progress.stage != "rain" )
             return;
-        if ( filled_s < 0.0 && p_min >= -0.02 * 1000.0 * 9.81 * 5.0 )
-            filled_s = progress.stage_time_s;
+        const double pocket = -0.02 * 1000.0 * 9.81 * 5.0;
+        for ( const Check& c : _checks )
+            if ( c.p_min < pocket )
+                filled_s = -1.0;
+            else if ( filled_s < 0.0 )
+                filled_s = c.time_s;
+        if ( filled_s < 0.0 )
+            return;
         const double settled_from =
-            filled_s < 0.0 ? 1.0e300
-                           : std::max( { arrival_s + _settle, filled_s + 0.5,
-                                         _settled_from } );
-        if ( progress.stage_time_s >= settled_from - 1.0 )
-            late_peak_ratio = std::max( late_peak_ratio, check.peak_ratio );
-        if ( progress.stage_time_s < settled_from )
-            return;
-        ++settled_checks;
-        settled.point_error =
-            std::max( settled.point_error, check.point_error );
-        settled.intra_cell = std::max( settled.intra_cell, check.intra_cell );
-        settled.cell_mean_error =
-            std::max( settled.cell_mean_error, check.cell_mean_error );
+            std::max( { arrival_s + _settle, filled_s + 0.5, _settled_from } );
+        for ( const Check& c : _checks )
+        {
+            if ( c.time_s >= settled_from - 1.0 )
+                late_peak_ratio =
+                    std::max( late_peak_ratio, c.hydrostatic.peak_ratio );
+            if ( c.time_s < settled_from )
+                continue;
+            ++settled_checks;
+            settled.point_error =
+                std::max( settled.point_error, c.hydrostatic.point_error );
+            settled.intra_cell =
+                std::max( settled.intra_cell, c.hydrostatic.intra_cell );
+            settled.cell_mean_error = std::max( settled.cell_mean_error,
+                                                c.hydrostatic.cell_mean_error );
+        }
     }
     double arrival_s = -1.0;
     double filled_s = -1.0;
@@ -226,6 +244,14 @@ class WettingHistory : public mpm::RunObserver
     double _settle;
     double _next = 0.0;
     double _momenta[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
+    //! A check from the front's arrival on.
+    struct Check
+    {
+        double time_s;
+        double p_min; //!< lowest p_w, Pa
+        HydrostaticCheck hydrostatic;
+    };
+    std::vector<Check> _checks;
 };
 
 } // namespace base_cells

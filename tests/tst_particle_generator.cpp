@@ -63,6 +63,45 @@ TEST( ParticleGenerator, fills_polygons_with_gauss_points )
     EXPECT_NEAR( points.x[1], 0.5 * ( 0.5 - 0.5 / std::sqrt( 3.0 ) ), 1e-14 );
 }
 
+// The points come column of cells by column (x-major, as the nodes' flat
+// index), a cell's n x n points together, row by row within it; the two
+// bodies' points interleave where they share a column.
+TEST( ParticleGenerator, orders_points_by_cell_column )
+{
+    const auto points = mpm::generatePoints( twoBodyCase( 2 ) );
+    const double h = 0.5;
+    long previous = -1;
+    int columns_with_both_bodies = 0, last_column = -1;
+    bool column_has[2] = { false, false };
+    for ( int p = 0; p < points.size(); ++p )
+    {
+        const int ci =
+            static_cast<int>( std::floor( ( points.x[2 * p] + 1.0 ) / h ) );
+        const int cj =
+            static_cast<int>( std::floor( points.x[2 * p + 1] / h ) );
+        const long key = ci * 6L + cj;
+        ASSERT_GE( key, previous ) << "point " << p;
+        if ( key == previous )
+        {
+            // Within a cell: row by row, left to right.
+            const double dy = points.x[2 * p + 1] - points.x[2 * p - 1];
+            const double dx = points.x[2 * p] - points.x[2 * p - 2];
+            EXPECT_TRUE( dy > 1e-12 || ( std::abs( dy ) < 1e-12 && dx > 0.0 ) )
+                << "point " << p;
+        }
+        previous = key;
+        if ( ci != last_column )
+        {
+            columns_with_both_bodies += column_has[0] && column_has[1];
+            column_has[0] = column_has[1] = false;
+            last_column = ci;
+        }
+        column_has[points.material[p]] = true;
+    }
+    columns_with_both_bodies += column_has[0] && column_has[1];
+    EXPECT_EQ( columns_with_both_bodies, 4 ); // the triangle's x in [0, 2]
+}
+
 // Boundary selectors and conditions combine into node flag masks.
 TEST( ParticleGenerator, node_flags_from_boundaries )
 {

@@ -20,7 +20,9 @@ struct InitialPoints
 /*!
   \brief Material points of every body: n x n points per grid cell at the
   Gauss positions of the cell, volume h^2 / n^2, kept where the point lies
-  inside the body's polygon (the first body that contains a point owns it).
+  inside the body's polygon (the first body that contains a point owns it),
+  in the order of the cells' columns (x-major, as the nodes' flat index),
+  so that threads splitting the points and the nodes share little.
 */
 InitialPoints generatePoints( const CaseConfig& config );
 
