@@ -82,22 +82,27 @@ KOKKOS_INLINE_FUNCTION double speed2( const Points& points, const int p )
 }
 
 //---------------------------------------------------------------------------//
-//! Sum of term(p) over the active points, as a Value.
-template <class Value, class ExecSpace, class Term>
-Value sumOverActivePoints( const ExecSpace& exec_space, const char* label,
-                           const ParticleViews<ExecSpace>& pv,
-                           const Term& term )
+/*!
+  \brief term(p) over the active points joined by a Kokkos reducer
+  (Kokkos::Sum<Value>, Kokkos::Max<Value>, ...): its value_type.
+*/
+template <class Reducer, class ExecSpace, class Term>
+typename Reducer::value_type
+reduceOverActivePoints( const ExecSpace& exec_space, const char* label,
+                        const ParticleViews<ExecSpace>& pv, const Term& term )
 {
+    using Value = typename Reducer::value_type;
     const auto points = unmanaged( pv );
-    Value total = 0;
+    Value result{};
+    const Reducer reducer( result );
     Kokkos::parallel_reduce(
         label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, Value& sum ) {
+        KOKKOS_LAMBDA( const int p, Value& joined ) {
             if ( points.status_p( p ) == point_active )
-                sum += term( p );
+                reducer.join( joined, term( p ) );
         },
-        total );
-    return total;
+        reducer );
+    return result;
 }
 
 //! Total kinetic energy sum 0.5 m_p |v_p|^2, J (per metre out of plane).
@@ -106,7 +111,7 @@ double kineticEnergy( const ExecSpace& exec_space,
                       const ParticleViews<ExecSpace>& pv )
 {
     const auto points = unmanaged( pv );
-    return sumOverActivePoints<double>(
+    return reduceOverActivePoints<Kokkos::Sum<double>>(
         exec_space, "mpm::kinetic_energy", pv, KOKKOS_LAMBDA( const int p ) {
             return 0.5 * points.m_p( p ) * speed2( points, p );
         } );
@@ -120,16 +125,9 @@ double maxLengthOverActivePoints( const ExecSpace& exec_space,
                                   const ParticleViews<ExecSpace>& pv,
                                   const Length2& length2 )
 {
-    const auto points = unmanaged( pv );
-    double max_length2 = 0.0;
-    Kokkos::parallel_reduce(
-        label, Kokkos::RangePolicy<ExecSpace>( exec_space, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p, double& max2 ) {
-            if ( points.status_p( p ) == point_active && length2( p ) > max2 )
-                max2 = length2( p );
-        },
-        Kokkos::Max<double>( max_length2 ) );
-    return Kokkos::Experimental::sqrt( max_length2 );
+    return Kokkos::Experimental::sqrt(
+        reduceOverActivePoints<Kokkos::Max<double>>( exec_space, label, pv,
+                                                     length2 ) );
 }
 
 //! Largest solid speed |v_p| over the active points, m/s.
@@ -155,7 +153,7 @@ long countPointsNotBelowSpeed( const ExecSpace& exec_space,
 {
     const auto points = unmanaged( pv );
     const double limit2 = speed * speed;
-    return sumOverActivePoints<long>(
+    return reduceOverActivePoints<Kokkos::Sum<long>>(
         exec_space, "mpm::count_points_not_below_speed", pv,
         KOKKOS_LAMBDA( const int p ) {
             return !( speed2( points, p ) < limit2 ) ? 1L : 0L;
@@ -187,7 +185,7 @@ double movedArea( const ExecSpace& exec_space,
 {
     const auto points = unmanaged( pv );
     const double limit2 = displacement * displacement;
-    return sumOverActivePoints<double>(
+    return reduceOverActivePoints<Kokkos::Sum<double>>(
         exec_space, "mpm::moved_area", pv, KOKKOS_LAMBDA( const int p ) {
             const bool moved =
                 length2( points.x_p( p, 0 ) - points.x0_p( p, 0 ),
