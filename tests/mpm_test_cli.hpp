@@ -23,12 +23,14 @@ struct CommandResult
     std::string output; //!< stdout and stderr
 };
 
-//! Runs `rainslide <args>`, its stdout and stderr going through `log`.
+//! Runs `rainslide <args>`, its stdout and stderr going through `log`;
+//! `wrapper` (e.g. "timeout -s INT 3 ") is put before the binary.
 inline CommandResult runRainslide( const std::string& args,
-                                   const std::filesystem::path& log )
+                                   const std::filesystem::path& log,
+                                   const std::string& wrapper = "" )
 {
-    const std::string command = std::string( RAINSLIDE_BINARY ) + " " + args +
-                                " > " + log.string() + " 2>&1";
+    const std::string command = wrapper + std::string( RAINSLIDE_BINARY ) +
+                                " " + args + " > " + log.string() + " 2>&1";
     const int status = std::system( command.c_str() );
     std::ifstream in( log );
     std::stringstream text;

@@ -22,7 +22,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -280,26 +279,20 @@ TEST( FosCli, ctrl_c_in_a_trial_stops_the_search )
     const auto ran = mpm_test::runCommand( mpm_test::runArgs(
         case_file, dir / "run", " --quiet --checkpoint-every-s 1.0" ) );
     ASSERT_EQ( ran.exit_code, 0 ) << ran.output;
-    const auto log = dir / "fos.log";
-    const std::string command =
-        "timeout --preserve-status -k 30 -s INT 3 " +
-        std::string( RAINSLIDE_BINARY ) + " fos " + case_file + " --restart " +
-        ( dir / "run" / "checkpoint.h5" ).string() + " --out " +
-        ( dir / "fos" ).string() + " --backend serial --periods 2000 > " +
-        log.string() + " 2>&1";
     const auto start = std::chrono::steady_clock::now();
-    const int status = std::system( command.c_str() );
+    const auto fos = mpm_test::runRainslide(
+        "fos " + case_file + " --restart " +
+            ( dir / "run" / "checkpoint.h5" ).string() + " --out " +
+            ( dir / "fos" ).string() + " --backend serial --periods 2000",
+        dir / "fos.log", "timeout --preserve-status -k 30 -s INT 3 " );
     const double wall_s = std::chrono::duration<double>(
                               std::chrono::steady_clock::now() - start )
                               .count();
-    std::ifstream in( log );
-    std::stringstream output;
-    output << in.rdbuf();
-    EXPECT_EQ( WEXITSTATUS( status ), 130 ) << output.str();
-    EXPECT_LT( wall_s, 15.0 ) << output.str();
-    EXPECT_NE( output.str().find( "interrupted in the trial at F = " ),
+    EXPECT_EQ( fos.exit_code, 130 ) << fos.output;
+    EXPECT_LT( wall_s, 15.0 ) << fos.output;
+    EXPECT_NE( fos.output.find( "interrupted in the trial at F = " ),
                std::string::npos )
-        << output.str();
+        << fos.output;
     EXPECT_FALSE( std::filesystem::exists( dir / "fos" / "fos.json" ) );
 }
 
