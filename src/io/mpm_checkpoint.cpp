@@ -184,11 +184,14 @@ void writeFile( const std::string& path, const Checkpoint& c )
     Hdf5Ops h5( who, path );
     // Exclusive: a symlink planted at path is removed, never followed.
     removeStale( path );
-    // The 1.8+ file format: superblock, object headers and B-trees carry
-    // checksums, so a damaged one is refused like a damaged dataset.
+    // The 1.10 file format: superblock, object headers, B-trees and the
+    // chunk index carry checksums, so a damaged one is refused like a
+    // damaged dataset. (In the 1.8 format a dataset's chunk index is a
+    // version 1 B-tree without one: a flipped bit in it lost the chunk, and
+    // the dataset read back as its fill value, all zeros, unchecked.)
     const hid_t fapl =
         h5.open( H5Pcreate( H5P_FILE_ACCESS ), "H5Pcreate", H5Pclose, "/" );
-    h5.check( H5Pset_libver_bounds( fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST ),
+    h5.check( H5Pset_libver_bounds( fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST ),
               "H5Pset_libver_bounds", "/" );
     const hid_t file =
         h5.open( H5Fcreate( path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, fapl ),
