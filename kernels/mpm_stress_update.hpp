@@ -14,7 +14,8 @@ namespace mpm
 //---------------------------------------------------------------------------//
 /*!
   \brief Stress update of one point from its velocity gradient L: Jaumann
-  rotation, then its constitutive model on the strain increment sym(L) dt;
+  rotation, then its constitutive model on the strain increment sym(L) dt
+  with the moduli at the point's volume (MaterialParams::elasticAt);
   accumulates strain and updates the volume by det(I + L dt).
 */
 template <class ExecSpace>
@@ -26,6 +27,7 @@ struct StressPointUpdate
     UnmanagedView<typename pv_type::tensor_view> eps_p;
     UnmanagedView<typename pv_type::scalar_view> eps_p_bar_p;
     UnmanagedView<typename pv_type::scalar_view> vol_p;
+    UnmanagedView<typename pv_type::scalar_view> vol0_p;
 
     StressPointUpdate( const ParticleViews<ExecSpace>& pv, const double dt )
         : kinematics{ dt }
@@ -33,6 +35,7 @@ struct StressPointUpdate
         , eps_p( pv.eps_p )
         , eps_p_bar_p( pv.eps_p_bar_p )
         , vol_p( pv.vol_p )
+        , vol0_p( pv.vol0_p )
     {
     }
 
@@ -46,10 +49,12 @@ struct StressPointUpdate
                         sigma_p( p, 3 ) };
         kinematics.rotate( L, s );
 
-        if ( params.model == physics::Model::MohrCoulomb )
-            physics::MohrCoulomb{}( params, de, s, eps_p_bar_p( p ) );
+        const physics::MaterialParams material =
+            params.elasticAt( vol_p( p ), vol0_p( p ) );
+        if ( material.model == physics::Model::MohrCoulomb )
+            physics::MohrCoulomb{}( material, de, s, eps_p_bar_p( p ) );
         else
-            physics::LinearElastic{}( params, de, s );
+            physics::LinearElastic{}( material, de, s );
 
         for ( int c = 0; c < 4; ++c )
         {

@@ -20,7 +20,7 @@ struct WaveSpeedLimit
 
 //---------------------------------------------------------------------------//
 //! The fastest wave of a dry point: the P wave, c_p = sqrt(E_c / rho_p),
-//! rho_p = m_p / vol_p (physics::waveSpeedDry).
+//! rho_p = m_p / vol_p, E_c at the point's volume (physics::waveSpeedDry).
 template <class ExecSpace>
 struct DryWaveSpeed
 {
@@ -35,7 +35,7 @@ struct DryWaveSpeed
     operator()( const int p, const physics::MaterialParams& params ) const
     {
         return physics::waveSpeedDry( params, points.m_p( p ),
-                                      points.vol_p( p ) );
+                                      points.vol_p( p ), points.vol0_p( p ) );
     }
 };
 
@@ -76,10 +76,11 @@ struct TwoPhaseWaveSpeed
     {
         if ( skeleton )
             return physics::waveSpeedDry( params, points.m_p( p ),
-                                          points.vol_p( p ) );
+                                          points.vol_p( p ),
+                                          points.vol0_p( p ) );
         return physics::waveSpeedTwoPhase(
             params, water, points.m_p( p ), points.vol_p( p ),
-            water_points.n_p( p ), water_points.S_p( p ) );
+            points.vol0_p( p ), water_points.n_p( p ), water_points.S_p( p ) );
     }
 };
 

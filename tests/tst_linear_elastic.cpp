@@ -58,4 +58,31 @@ TEST( LinearElastic, volumetric_strain_gives_bulk_modulus )
     EXPECT_EQ( s[2], 0.0 );
 }
 
+// Moduli that fall with dilation: a point stretched to J = V / V0 = 2.5
+// takes the stress increments of K / J and G / J, 0.4 times those above;
+// at J <= 1, or with constant moduli, those of K and G.
+TEST( LinearElastic, moduli_are_per_unit_initial_volume )
+{
+    const auto m = testParams();
+    EXPECT_DOUBLE_EQ( m.modulusFactor( 0.25, 0.1 ), 0.4 );
+    EXPECT_DOUBLE_EQ( m.modulusFactor( 0.1, 0.1 ), 1.0 );
+    EXPECT_DOUBLE_EQ( m.modulusFactor( 0.05, 0.1 ), 1.0 );
+    const auto stretched = m.elasticAt( 0.25, 0.1 );
+    EXPECT_NEAR( stretched.constrainedModulus(), 0.4 * 12.0e6, 1e-6 );
+    EXPECT_EQ( stretched.density, m.density );
+
+    double s[4] = { 0.0, 0.0, 0.0, 0.0 };
+    const double de[4] = { 0.0, -1.0e-3, 1.0e-3, 0.0 };
+    mpm::physics::LinearElastic{}( stretched, de, s );
+    EXPECT_NEAR( s[1], -0.4 * 12.0e3, 1e-6 );
+    EXPECT_NEAR( s[0], -0.4 * 4.0e3, 1e-6 );
+    EXPECT_NEAR( s[2], 0.4 * 8.0e3, 1e-6 );
+
+    auto constant = m;
+    constant.moduli_fall_with_dilation = false;
+    EXPECT_DOUBLE_EQ( constant.modulusFactor( 0.25, 0.1 ), 1.0 );
+    EXPECT_NEAR( constant.elasticAt( 0.25, 0.1 ).constrainedModulus(), 12.0e6,
+                 1e-6 );
+}
+
 } // namespace

@@ -157,8 +157,17 @@ TEST( WaveSpeeds, dry_saturated_and_unsaturated_points )
     // E = 1e7, nu = 0.25: E_c = E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 1.2e7.
     const auto soil = ph::elasticParams( 1.0e7, 0.25, 2000.0 );
     EXPECT_NEAR( soil.constrainedModulus(), 1.2e7, 1e-6 );
-    EXPECT_NEAR( ph::waveSpeedDry( soil, 500.0, 0.25 ), std::sqrt( 6.0e3 ),
+    EXPECT_NEAR( ph::waveSpeedDry( soil, 500.0, 0.25, 0.25 ),
+                 std::sqrt( 6.0e3 ), 1e-12 );
+    // Stretched to 4x its initial volume (rho 4x lower): the moduli fall
+    // 4x with it, so the wave keeps its speed; constant moduli make it 2x
+    // faster.
+    EXPECT_NEAR( ph::waveSpeedDry( soil, 500.0, 1.0, 0.25 ), std::sqrt( 6.0e3 ),
                  1e-12 );
+    auto constant = soil;
+    constant.moduli_fall_with_dilation = false;
+    EXPECT_NEAR( ph::waveSpeedDry( constant, 500.0, 1.0, 0.25 ),
+                 2.0 * std::sqrt( 6.0e3 ), 1e-12 );
     // Saturated (dS/dp = 0, S = 1), n = 0.4, K_w = 2e9, rho_m = 2000:
     // mixture sqrt((1.2e7 + 2e9 / 0.4) / 2000) = sqrt(2.506e6) m/s, water
     // sqrt(2e9 / 1000) = sqrt(2e6) m/s: the mixture's.
@@ -181,9 +190,17 @@ TEST( WaveSpeeds, dry_saturated_and_unsaturated_points )
     // rho_m = m_s / V + n S rho_w.
     ph::WaterParams water;
     water.bulk_modulus = 2.0e9;
-    EXPECT_NEAR( ph::waveSpeedTwoPhase( soil, water, 400.0, 0.25, 0.4, 1.0 ),
-                 std::sqrt( ( 1.2e7 + 1.0 / ( 0.4 * 5.0e-10 ) ) / 2000.0 ),
-                 1e-9 );
+    EXPECT_NEAR(
+        ph::waveSpeedTwoPhase( soil, water, 400.0, 0.25, 0.25, 0.4, 1.0 ),
+        std::sqrt( ( 1.2e7 + 1.0 / ( 0.4 * 5.0e-10 ) ) / 2000.0 ), 1e-9 );
+    // The same point at twice its initial volume (V0 = 0.125): the
+    // skeleton's E_c halves; at half of it (V0 = 0.5) it stays.
+    EXPECT_NEAR(
+        ph::waveSpeedTwoPhase( soil, water, 400.0, 0.25, 0.125, 0.4, 1.0 ),
+        std::sqrt( ( 0.6e7 + 1.0 / ( 0.4 * 5.0e-10 ) ) / 2000.0 ), 1e-9 );
+    EXPECT_NEAR(
+        ph::waveSpeedTwoPhase( soil, water, 400.0, 0.25, 0.5, 0.4, 1.0 ),
+        std::sqrt( ( 1.2e7 + 1.0 / ( 0.4 * 5.0e-10 ) ) / 2000.0 ), 1e-9 );
     // h / (c + |v|).
     EXPECT_DOUBLE_EQ( ph::pointTimeStep( 0.5, 95.0, 3.0, 4.0 ), 0.005 );
 }

@@ -353,6 +353,12 @@ struct SolverConfig
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;
     /*!
+      A point dilated to J = V / V0 > 1 has the moduli K / J and G / J, so
+      its P-wave speed, and the stable step, do not grow as it stretches
+      (physics::MaterialParams::moduli_fall_with_dilation).
+    */
+    bool moduli_fall_with_dilation = true;
+    /*!
       Complete the stress divergence of cells cut by a fixed base (a base
       line between grid lines): physics::BaseCellCompletion.
     */

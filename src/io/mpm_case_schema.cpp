@@ -24,6 +24,7 @@ const std::vector<ConfigKey<SolverConfig>>& solverKeys()
         numberKey( "flip_fraction", &S::flip_fraction,
                    Range::interval( 0.0, false, 1.0, false ), "" ),
         flagKey( "bbar", &S::bbar ),
+        flagKey( "moduli_fall_with_dilation", &S::moduli_fall_with_dilation ),
         flagKey( "base_cell_completion", &S::base_cell_completion ),
         flagKey( "cell_equilibrium", &S::cell_equilibrium ),
         flagKey( "cell_pressure_slope", &S::cell_pressure_slope ),

@@ -58,6 +58,11 @@ struct MaterialParams
     //! What eps_p_bar (and so the cohesion's softening) measures.
     SofteningMeasure softening_measure =
         SofteningMeasure::EquivalentPlasticStrain;
+    //! A point dilated to J = V / V0 > 1 has the moduli K / J and G / J
+    //! (elasticAt), so its stiffness per unit mass, its P-wave speed and the
+    //! stable step do not grow as it stretches; at J <= 1, K and G
+    //! (solver.moduli_fall_with_dilation).
+    bool moduli_fall_with_dilation = true;
     // Two-phase scenes only.
     double permeability = 0.0; //!< intrinsic permeability k, m^2
     RetentionParams retention; //!< S(p_w), k_rel(S)
@@ -91,6 +96,27 @@ struct MaterialParams
     KOKKOS_INLINE_FUNCTION double constrainedModulus() const
     {
         return bulk_modulus + 4.0 / 3.0 * shear_modulus;
+    }
+
+    //! The factor on K and G of a point of volume vol and initial volume
+    //! vol0: V0 / V if it has dilated (V > V0) and moduli_fall_with_dilation,
+    //! else 1.
+    KOKKOS_INLINE_FUNCTION double modulusFactor( const double vol,
+                                                 const double vol0 ) const
+    {
+        return moduli_fall_with_dilation && vol > vol0 ? vol0 / vol : 1.0;
+    }
+
+    //! The material of a point of volume vol and initial volume vol0: K and
+    //! G times modulusFactor (docs/formulation.md, step 8).
+    KOKKOS_INLINE_FUNCTION MaterialParams elasticAt( const double vol,
+                                                     const double vol0 ) const
+    {
+        MaterialParams at = *this;
+        const double factor = modulusFactor( vol, vol0 );
+        at.bulk_modulus *= factor;
+        at.shear_modulus *= factor;
+        return at;
     }
 };
 

@@ -10,13 +10,16 @@ namespace mpm
 {
 namespace physics
 {
-//! P-wave speed sqrt(E_c / rho) of a dry point of mass m and volume vol,
+//! P-wave speed sqrt(E_c / rho) of a dry point of mass m, volume vol and
+//! initial volume vol0 (E_c at its volume, MaterialParams::modulusFactor),
 //! m/s.
-KOKKOS_INLINE_FUNCTION double
-waveSpeedDry( const MaterialParams& m, const double mass, const double vol )
+KOKKOS_INLINE_FUNCTION double waveSpeedDry( const MaterialParams& m,
+                                            const double mass, const double vol,
+                                            const double vol0 )
 {
     const double rho = mass / vol;
-    return Kokkos::Experimental::sqrt( m.constrainedModulus() / rho );
+    return Kokkos::Experimental::sqrt( m.constrainedModulus() *
+                                       m.modulusFactor( vol, vol0 ) / rho );
 }
 
 //---------------------------------------------------------------------------//
@@ -40,16 +43,18 @@ twoPhaseWaveSpeed( const double constrained_modulus, const double rho_m,
 }
 
 //! Fastest wave of a two-phase point of solid mass `mass`, volume vol,
-//! porosity n and saturation S (twoPhaseWaveSpeed with the saturated fluid
-//! stiffness, dS/dp_w = 0: see mpm::criticalTimeStepTwoPhase), m/s.
+//! initial volume vol0, porosity n and saturation S (twoPhaseWaveSpeed with the
+//! saturated fluid stiffness, dS/dp_w = 0: see mpm::criticalTimeStepTwoPhase),
+//! m/s.
 KOKKOS_INLINE_FUNCTION double
 waveSpeedTwoPhase( const MaterialParams& m, const WaterParams& water,
-                   const double mass, const double vol, const double n,
-                   const double S )
+                   const double mass, const double vol, const double vol0,
+                   const double n, const double S )
 {
     const double rho_m = mass / vol + n * S * water.density;
-    return twoPhaseWaveSpeed( m.constrainedModulus(), rho_m, water.density, n,
-                              S, 0.0, water.bulk_modulus );
+    return twoPhaseWaveSpeed(
+        m.constrainedModulus() * m.modulusFactor( vol, vol0 ), rho_m,
+        water.density, n, S, 0.0, water.bulk_modulus );
 }
 
 //! Stable step h / (c + |v|) of a point (Courant number 1), s.

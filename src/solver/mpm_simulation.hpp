@@ -138,6 +138,9 @@ class Simulation
     {
         stateChanged();
         materials = makeMaterialTable( stage.materials );
+        for ( int k = 0; k < materials.size; ++k )
+            materials.materials[k].moduli_fall_with_dilation =
+                solver.moduli_fall_with_dilation;
         if ( analysis == AnalysisType::Unsaturated && solver.retention_table )
             _retention_tables.attach( materials );
         // Two-phase only for now: the dry step has no completion either.
