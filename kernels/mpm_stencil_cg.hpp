@@ -13,6 +13,9 @@
 #include <Kokkos_Core.hpp>
 #include <Kokkos_MathematicalFunctions.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace mpm
 {
 /*!
@@ -52,7 +55,7 @@ struct CgReport
 namespace Impl
 {
 //! (A x)_ij: row (i, j) of the 9-point stencil a times x (neighbours
-//! outside the grid skipped).
+//! outside the grid skipped; an interior node takes all 9 unchecked).
 template <class StencilView, class NodeView>
 KOKKOS_INLINE_FUNCTION double
 stencilRow( const StencilView& a, const NodeView& x, const int i, const int j )
@@ -60,6 +63,13 @@ stencilRow( const StencilView& a, const NodeView& x, const int i, const int j )
     const int nx1 = static_cast<int>( a.extent( 0 ) );
     const int ny1 = static_cast<int>( a.extent( 1 ) );
     double sum = 0.0;
+    if ( i > 0 && i < nx1 - 1 && j > 0 && j < ny1 - 1 )
+    {
+        for ( int di = -1; di <= 1; ++di )
+            for ( int dj = -1; dj <= 1; ++dj )
+                sum += a( i, j, 3 * ( di + 1 ) + dj + 1 ) * x( i + di, j + dj );
+        return sum;
+    }
     for ( int di = -1; di <= 1; ++di )
         for ( int dj = -1; dj <= 1; ++dj )
         {
@@ -114,13 +124,24 @@ double dotOverNodes( const ExecSpace& exec,
   \brief Work vectors of the solve: residual r, preconditioned residual
   z = M^-1 r, w = A z, search direction p and s = A p; only their values on
   the unknowns are used, and z is zero off them (it is read as a neighbour
-  in A z).
+  in A z). `ij`: the grid indices of the unknowns; `partial`: each
+  thread's share of an iteration's sums, two buffers of `threads` rows;
+  `result`: what a solve reports (TeamCg).
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct CgWorkspace
 {
     using view = Kokkos::View<double**, DeviceType<ExecSpace>, MemoryTraits>;
+    using sums_view =
+        Kokkos::View<double* [3], DeviceType<ExecSpace>, MemoryTraits>;
+    //! iterations, |r|^2, |b|^2 and 1 if converged, else 0.
+    using result_view =
+        Kokkos::View<double[4], DeviceType<ExecSpace>, MemoryTraits>;
     view r, z, w, p, s;
+    Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> ij;
+    sums_view partial;
+    result_view result;
+    int threads = 1;
     CgWorkspace() = default;
     CgWorkspace( const int nx, const int ny )
         : r( "cg_r", nx + 1, ny + 1 )
@@ -128,6 +149,10 @@ struct CgWorkspace
         , w( "cg_w", nx + 1, ny + 1 )
         , p( "cg_p", nx + 1, ny + 1 )
         , s( "cg_s", nx + 1, ny + 1 )
+        , ij( "cg_ij", ( nx + 1 ) * ( ny + 1 ) )
+        , partial( "cg_partial_sums", 2 * ExecSpace::concurrency() )
+        , result( "cg_result" )
+        , threads( ExecSpace::concurrency() )
     {
     }
 };
@@ -143,48 +168,165 @@ unmanaged( const CgWorkspace<ExecSpace>& w )
     u.w = w.w;
     u.p = w.p;
     u.s = w.s;
+    u.ij = w.ij;
+    u.partial = w.partial;
+    u.result = w.result;
+    u.threads = w.threads;
     return u;
 }
 
 namespace Impl
 {
-//! The three sums one iteration needs: gamma = r . z, delta = w . z and
-//! rr = r . r (the stopping test).
+//! Three sums over the unknowns: in an iteration gamma = r . z,
+//! delta = w . z and rr = r . r (the stopping test).
 struct CgSums
 {
     double gamma = 0.0, delta = 0.0, rr = 0.0;
 };
 
 /*!
-  \brief w = A z over the unknowns and, in the same pass, the sums of
-  CgSums (a functor: Kokkos 3.4 reduces a struct only through a `volatile`
-  join, docs: house style §11).
+  \brief solveJacobiCg in one kernel launch: one team whose threads share
+  the unknowns (TeamThreadRange: the same share in every phase). They meet
+  at a barrier wherever one reads what another wrote (z at the neighbours
+  in A z; the sums), and each adds the iteration's sums from the threads'
+  partials in the same order, so all take the same alpha, beta and stopping
+  decision. One launch per solve instead of two per iteration and five to
+  start: a 6-iteration solve on 1,089 unknowns took 72 us on 2 threads
+  against 131 us (the pressure_cg benchmark, docs/formulation.md §9).
 */
-template <class ExecSpace>
-struct CgProducts
+template <class ExecSpace, class NodeView>
+struct TeamCg
 {
-    using value_type = CgSums;
+    using member_type = typename Kokkos::TeamPolicy<ExecSpace>::member_type;
     UnmanagedView<decltype( NodeStencilSystem<ExecSpace>::a )> a;
     UnmanagedView<decltype( NodeStencilSystem<ExecSpace>::nodes )> nodes;
     CgWorkspace<ExecSpace, Kokkos::MemoryUnmanaged> v;
+    UnmanagedView<NodeView> b, x;
+    int num_nodes = 0;
+    double tolerance = 0.0;
+    int max_iterations = 0;
 
-    KOKKOS_INLINE_FUNCTION void operator()( const int m, CgSums& sums ) const
+    //! The sums of every thread's `mine`, the same on all of them.
+    KOKKOS_INLINE_FUNCTION CgSums teamSums( const member_type& team,
+                                            const CgSums& mine,
+                                            int& buffer ) const
     {
-        const int ny1 = static_cast<int>( a.extent( 1 ) );
-        const int i = nodes( m ) / ny1, j = nodes( m ) % ny1;
-        const double az = stencilRow( a, v.z, i, j );
-        v.w( i, j ) = az;
-        sums.gamma += v.r( i, j ) * v.z( i, j );
-        sums.delta += az * v.z( i, j );
-        sums.rr += v.r( i, j ) * v.r( i, j );
+        const int first = buffer * team.team_size();
+        v.partial( first + team.team_rank(), 0 ) = mine.gamma;
+        v.partial( first + team.team_rank(), 1 ) = mine.delta;
+        v.partial( first + team.team_rank(), 2 ) = mine.rr;
+        team.team_barrier();
+        CgSums all;
+        for ( int t = first; t < first + team.team_size(); ++t )
+        {
+            all.gamma += v.partial( t, 0 );
+            all.delta += v.partial( t, 1 );
+            all.rr += v.partial( t, 2 );
+        }
+        // The next sums go to the other buffer: a thread may still read
+        // this one, but not after the next barrier.
+        buffer = 1 - buffer;
+        return all;
     }
-    KOKKOS_INLINE_FUNCTION void init( CgSums& sums ) const { sums = CgSums{}; }
-    KOKKOS_INLINE_FUNCTION void join( volatile CgSums& into,
-                                      const volatile CgSums& from ) const
+
+    //! f(i, j) for this thread's share of the unknowns (v.ij).
+    template <class F>
+    KOKKOS_INLINE_FUNCTION void forMyNodes( const member_type& team,
+                                            const F& f ) const
     {
-        into.gamma += from.gamma;
-        into.delta += from.delta;
-        into.rr += from.rr;
+        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, num_nodes ),
+                              [&]( const int m )
+                              { f( v.ij( m, 0 ), v.ij( m, 1 ) ); } );
+    }
+
+    //! w = A z on this thread's unknowns and its share of CgSums.
+    KOKKOS_INLINE_FUNCTION CgSums products( const member_type& team ) const
+    {
+        CgSums mine;
+        forMyNodes( team,
+                    [&]( const int i, const int j )
+                    {
+                        const double az = stencilRow( a, v.z, i, j );
+                        v.w( i, j ) = az;
+                        mine.gamma += v.r( i, j ) * v.z( i, j );
+                        mine.delta += az * v.z( i, j );
+                        mine.rr += v.r( i, j ) * v.r( i, j );
+                    } );
+        return mine;
+    }
+
+    KOKKOS_INLINE_FUNCTION void operator()( const member_type& team ) const
+    {
+        int buffer = 0;
+        // The unknowns' grid indices (the same share of them as every
+        // phase's); z = 0 off the unknowns (read as a neighbour), x on them;
+        // p = s = 0.
+        const int ny1 = static_cast<int>( a.extent( 1 ) );
+        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, num_nodes ),
+                              [&]( const int m )
+                              {
+                                  v.ij( m, 0 ) = nodes( m ) / ny1;
+                                  v.ij( m, 1 ) = nodes( m ) % ny1;
+                              } );
+        const int grid_nodes = static_cast<int>( a.extent( 0 ) ) * ny1;
+        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, grid_nodes ),
+                              [&]( const int n )
+                              { v.z( n / ny1, n % ny1 ) = 0.0; } );
+        team.team_barrier();
+        forMyNodes( team,
+                    [&]( const int i, const int j )
+                    {
+                        v.z( i, j ) = x( i, j );
+                        v.p( i, j ) = 0.0;
+                        v.s( i, j ) = 0.0;
+                    } );
+        team.team_barrier();
+        // r = b - A x and |b|^2; then z = M^-1 r (after every thread has
+        // read its neighbours' z = x).
+        CgSums mine;
+        forMyNodes( team,
+                    [&]( const int i, const int j )
+                    {
+                        v.r( i, j ) = b( i, j ) - stencilRow( a, v.z, i, j );
+                        mine.rr += b( i, j ) * b( i, j );
+                    } );
+        const double bb = teamSums( team, mine, buffer ).rr;
+        forMyNodes( team, [&]( const int i, const int j )
+                    { v.z( i, j ) = v.r( i, j ) / a( i, j, 4 ); } );
+        team.team_barrier();
+        CgSums sums = teamSums( team, products( team ), buffer );
+
+        const double target = tolerance * Kokkos::Experimental::sqrt( bb );
+        double gamma_old = 1.0, alpha_old = 1.0;
+        int iterations = 0;
+        while ( Kokkos::Experimental::sqrt( sums.rr ) > target &&
+                iterations < max_iterations && sums.gamma > 0.0 )
+        {
+            const double beta = iterations == 0 ? 0.0 : sums.gamma / gamma_old;
+            const double alpha =
+                sums.gamma / ( sums.delta - beta * sums.gamma / alpha_old );
+            forMyNodes( team,
+                        [&]( const int i, const int j )
+                        {
+                            v.p( i, j ) = v.z( i, j ) + beta * v.p( i, j );
+                            v.s( i, j ) = v.w( i, j ) + beta * v.s( i, j );
+                            x( i, j ) += alpha * v.p( i, j );
+                            v.r( i, j ) -= alpha * v.s( i, j );
+                            v.z( i, j ) = v.r( i, j ) / a( i, j, 4 );
+                        } );
+            team.team_barrier();
+            gamma_old = sums.gamma;
+            alpha_old = alpha;
+            sums = teamSums( team, products( team ), buffer );
+            ++iterations;
+        }
+        if ( team.team_rank() == 0 )
+        {
+            v.result( 0 ) = iterations;
+            v.result( 1 ) = sums.rr;
+            v.result( 2 ) = bb;
+            v.result( 3 ) = Kokkos::Experimental::sqrt( sums.rr ) <= target;
+        }
     }
 };
 } // namespace Impl
@@ -197,9 +339,9 @@ struct CgProducts
   as it is. The iteration is Chronopoulos & Gear's (1989) form of
   preconditioned CG: the same iterates as the textbook form in exact
   arithmetic, with s = A p kept by recurrence so that each iteration is one
-  update and one pass that forms w = A z with all three of its sums (two
-  kernels, one reduction: on a grid of a few thousand nodes the cost of a
-  kernel launch, not the arithmetic, sets the time).
+  update and one pass that forms w = A z with all three of its sums. The
+  whole solve is one kernel launch (Impl::TeamCg: one team of up to
+  `w.threads` threads).
 */
 template <class ExecSpace, class NodeView>
 CgReport
@@ -207,70 +349,24 @@ solveJacobiCg( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
                const NodeView& b, const NodeView& x, CgWorkspace<ExecSpace>& w,
                const double tolerance, const int max_iterations )
 {
-    const auto a = unmanaged( s.a );
-    const auto nodes = unmanaged( s.nodes );
-    const auto bu = unmanaged( b );
-    const auto xu = unmanaged( x );
-    const auto v = unmanaged( w );
-    const int ny1 = static_cast<int>( x.extent( 1 ) );
-    const auto policy = Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes );
-
-    // r = b - A x (x copied into z on the unknowns only), z = M^-1 r, and
-    // |b|^2. z is read as a neighbour: zero off the unknowns; p = s = 0.
-    Kokkos::deep_copy( exec, w.z, 0.0 );
-    Kokkos::deep_copy( exec, w.p, 0.0 );
-    Kokkos::deep_copy( exec, w.s, 0.0 );
+    using Solve = Impl::TeamCg<ExecSpace, NodeView>;
+    const Solve solve{ unmanaged( s.a ), unmanaged( s.nodes ), unmanaged( w ),
+                       unmanaged( b ),   unmanaged( x ),       s.num_nodes,
+                       tolerance,        max_iterations };
+    const Kokkos::TeamPolicy<ExecSpace> probe( exec, 1, 1 );
+    const int threads = std::min(
+        w.threads, probe.team_size_max( solve, Kokkos::ParallelForTag() ) );
     Kokkos::parallel_for(
-        "cg_copy_x", policy, KOKKOS_LAMBDA( const int m ) {
-            const int n = nodes( m );
-            v.z( n / ny1, n % ny1 ) = xu( n / ny1, n % ny1 );
-        } );
-    Impl::applyStencil( exec, s, w.z, w.w );
-    double bb = 0.0;
-    Kokkos::parallel_reduce(
-        "cg_start", policy,
-        KOKKOS_LAMBDA( const int m, double& acc ) {
-            const int n = nodes( m );
-            const int i = n / ny1, j = n % ny1;
-            v.r( i, j ) = bu( i, j ) - v.w( i, j );
-            v.z( i, j ) = v.r( i, j ) / a( i, j, 4 );
-            acc += bu( i, j ) * bu( i, j );
-        },
-        bb );
-    const Impl::CgProducts<ExecSpace> products{ a, nodes, v };
-    Impl::CgSums sums;
-    Kokkos::parallel_reduce( "cg_products", policy, products, sums );
-
+        "cg_solve", Kokkos::TeamPolicy<ExecSpace>( exec, 1, threads ), solve );
+    exec.fence();
+    const auto host =
+        Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), w.result );
     CgReport report;
     report.tolerance = tolerance;
-    report.rhs_norm = Kokkos::Experimental::sqrt( bb );
-    report.residual_norm = Kokkos::Experimental::sqrt( sums.rr );
-    const double target = tolerance * report.rhs_norm;
-    double gamma_old = 1.0, alpha_old = 1.0;
-    while ( report.residual_norm > target &&
-            report.iterations < max_iterations && sums.gamma > 0.0 )
-    {
-        const double beta =
-            report.iterations == 0 ? 0.0 : sums.gamma / gamma_old;
-        const double alpha =
-            sums.gamma / ( sums.delta - beta * sums.gamma / alpha_old );
-        Kokkos::parallel_for(
-            "cg_update", policy, KOKKOS_LAMBDA( const int m ) {
-                const int n = nodes( m );
-                const int i = n / ny1, j = n % ny1;
-                v.p( i, j ) = v.z( i, j ) + beta * v.p( i, j );
-                v.s( i, j ) = v.w( i, j ) + beta * v.s( i, j );
-                xu( i, j ) += alpha * v.p( i, j );
-                v.r( i, j ) -= alpha * v.s( i, j );
-                v.z( i, j ) = v.r( i, j ) / a( i, j, 4 );
-            } );
-        gamma_old = sums.gamma;
-        alpha_old = alpha;
-        Kokkos::parallel_reduce( "cg_products", policy, products, sums );
-        report.residual_norm = Kokkos::Experimental::sqrt( sums.rr );
-        ++report.iterations;
-    }
-    report.converged = report.residual_norm <= target;
+    report.iterations = static_cast<int>( host( 0 ) );
+    report.residual_norm = std::sqrt( host( 1 ) );
+    report.rhs_norm = std::sqrt( host( 2 ) );
+    report.converged = host( 3 ) != 0.0;
     return report;
 }
 

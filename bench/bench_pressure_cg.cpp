@@ -1,0 +1,76 @@
+// The semi-implicit step's pressure solve (solveJacobiCg, one kernel
+// launch per solve) on a square grid of n x n cells: the 9-point stencil of
+// bilinear elements with a storage term on the diagonal, every interior
+// node an unknown (n = 34: 1,089 unknowns, the slope's size). Each solve
+// runs exactly `iterations` iterations (tolerance 0), the slope's typical
+// count per Picard solve. Rates: unknowns x iterations per second.
+
+#include <bench_problem.hpp>
+
+#include <mpm_stencil_cg.hpp>
+
+#include <cmath>
+#include <string>
+
+#include <Kokkos_Core.hpp>
+
+#include <benchmark/benchmark.h>
+
+namespace
+{
+constexpr int iterations = 7;
+
+template <class ExecSpace>
+void BM_pressureCg( benchmark::State& state )
+{
+    using node_view = Kokkos::View<double**, mpm::DeviceType<ExecSpace>>;
+    const int n = static_cast<int>( state.range( 0 ) );
+    mpm::NodeStencilSystem<ExecSpace> system( n, n, ( n - 1 ) * ( n - 1 ) );
+    const node_view b( "b", n + 1, n + 1 ), x( "x", n + 1, n + 1 );
+    auto a_h = Kokkos::create_mirror_view( system.a );
+    auto nodes_h = Kokkos::create_mirror_view( system.nodes );
+    auto b_h = Kokkos::create_mirror_view( b );
+    int m = 0;
+    for ( int i = 1; i < n; ++i )
+        for ( int j = 1; j < n; ++j )
+        {
+            nodes_h( m++ ) = i * ( n + 1 ) + j;
+            for ( int k = 0; k < 9; ++k )
+                a_h( i, j, k ) = k == 4 ? 8.0 / 3.0 + 0.5 : -1.0 / 3.0;
+            b_h( i, j ) = std::sin( 0.3 * i ) * std::cos( 0.2 * j );
+        }
+    system.num_nodes = m;
+    Kokkos::deep_copy( system.a, a_h );
+    Kokkos::deep_copy( system.nodes, nodes_h );
+    Kokkos::deep_copy( b, b_h );
+    mpm::CgWorkspace<ExecSpace> work( n, n );
+    const ExecSpace space;
+
+    for ( auto _ : state )
+    {
+        Kokkos::deep_copy( space, x, 0.0 );
+        const mpm::CgReport report =
+            mpm::solveJacobiCg( space, system, b, x, work, 0.0, iterations );
+        space.fence();
+        benchmark::DoNotOptimize( report.residual_norm );
+    }
+    state.counters["unknowns"] = m;
+    state.SetItemsProcessed( state.iterations() * m * iterations );
+}
+
+void cgSizes( benchmark::internal::Benchmark* b )
+{
+    mpm_bench::blockSizes( b, { 21, 34, 100 } );
+}
+
+const bool serial_cg =
+    ( mpm_bench::addBenchmark( "pressure_cg/Serial",
+                               BM_pressureCg<Kokkos::Serial>, cgSizes ),
+      true );
+#ifdef KOKKOS_ENABLE_OPENMP
+const bool openmp_cg =
+    ( mpm_bench::addBenchmark( "pressure_cg/OpenMP",
+                               BM_pressureCg<Kokkos::OpenMP>, cgSizes ),
+      true );
+#endif
+} // namespace
