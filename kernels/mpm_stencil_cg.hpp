@@ -192,7 +192,7 @@ struct CgSums
   partials in the same order, so all take the same alpha, beta and stopping
   decision. One launch per solve instead of two per iteration and five to
   start: a 6-iteration solve on 1,089 unknowns took 72 us on 2 threads
-  against 131 us (the pressure_cg benchmark, docs/formulation.md §9).
+  against 131 us with a kernel per phase (docs/formulation.md §9).
 */
 template <class ExecSpace, class NodeView>
 struct TeamCg
