@@ -2,17 +2,32 @@
 #define MPM_PRESSURE_ASSEMBLY_HPP
 
 #include <mpm_device_type.hpp>
+#include <mpm_grid_scatter.hpp>
 #include <mpm_particle_views.hpp>
-#include <mpm_scatter.hpp>
-#include <mpm_status_flags.hpp>
+#include <mpm_point_stencil.hpp>
 #include <mpm_stencil_cg.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 
 #include <Kokkos_Core.hpp>
-#include <Kokkos_ScatterView.hpp>
 
 namespace mpm
 {
+//! The point sums of the pressure operator's 9 stencil coefficients per
+//! node (a GridScatter) and the list of the nodes they touched.
+template <class ExecSpace>
+struct PressureStencilSums
+{
+    GridScatter<ExecSpace, 9> sums;
+    Kokkos::View<int*, DeviceType<ExecSpace>> touched;
+
+    PressureStencilSums() = default;
+    explicit PressureStencilSums( const physics::GridGeometry& grid )
+        : sums( "pressure_stencil_sums", grid.numNodes() )
+        , touched( "pressure_stencil_touched", grid.numNodes() )
+    {
+    }
+};
+
 /*!
   \brief Assembles the nodal pressure operator of the semi-implicit step
   (docs/formulation.md §9, item 3) from the active points into s.a:
@@ -20,53 +35,57 @@ namespace mpm
               + delta_IJ sum_p N_I(x_p) C_p V_p / Dt,
   M_p the point's mobility (m^2 / (Pa s)) and C_p its storage (1/Pa), for
   the 4 nodes of each point's cell and the 4 they couple with (9-point
-  stencil). A scatter: one private copy per thread on OpenMP, plain adds on
-  Serial. The coefficients are overwritten; s.nodes is left to the caller.
+  stencil). The points add into `sums` (one copy per thread on OpenMP,
+  plain adds on Serial); the rows of the nodes they touch are then
+  overwritten, and only those: a row no point touches keeps what it held
+  (no unknown node is without points). s.nodes is left to the caller.
 */
-template <class ExecSpace,
-          class Duplication = typename ScatterDuplication<ExecSpace>::type>
+template <class ExecSpace>
 void assemblePressureStencil(
     const ExecSpace& exec, const ParticleViews<ExecSpace>& pv,
     const Kokkos::View<double*, DeviceType<ExecSpace>>& mobility_p,
     const Kokkos::View<double*, DeviceType<ExecSpace>>& storage_p,
     const physics::GridGeometry& grid, const double dt,
-    NodeStencilSystem<ExecSpace>& s )
+    PressureStencilSums<ExecSpace>& sums, NodeStencilSystem<ExecSpace>& s )
 {
-    using Contribution = ScatterContribution<ExecSpace, Duplication>;
-    Kokkos::deep_copy( exec, s.a, 0.0 );
-    auto a_sv = Kokkos::Experimental::create_scatter_view<
-        Kokkos::Experimental::ScatterSum, Duplication, Contribution>( s.a );
-    const auto x_p = unmanaged( pv.x_p );
+    const auto handle = sums.sums.handle();
     const auto vol_p = unmanaged( pv.vol_p );
-    const auto status_p = unmanaged( pv.status_p );
     const auto m_p = unmanaged( mobility_p );
     const auto c_p = unmanaged( storage_p );
-    Kokkos::parallel_for(
-        "pressure_assembly",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, pv.size() ),
-        KOKKOS_LAMBDA( const int p ) {
-            if ( status_p( p ) != point_active )
-                return;
-            int ci, cj;
-            double w[4], dwdx[4], dwdy[4];
-            grid.weights( x_p( p, 0 ), x_p( p, 1 ), ci, cj, w, dwdx, dwdy );
+    const int ny1 = grid.ny + 1;
+    forEachPointStencil(
+        "mpm::pressure_assembly", exec, pv, grid,
+        KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
+            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
             const double flow = dt * vol_p( p ) * m_p( p );
             const double store = c_p( p ) * vol_p( p ) / dt;
-            auto a = a_sv.access();
+            auto access = handle.access();
             for ( int k = 0; k < 4; ++k )
             {
-                const int i = ci + k % 2, j = cj + k / 2;
-                a( i, j, 4 ) += store * w[k];
+                const int node = nodeIndex( ci + k % 2, cj + k / 2, ny1 );
+                access.touch( node );
+                access.add( node, 4, store * w[k] );
                 for ( int l = 0; l < 4; ++l )
                 {
                     // Node l seen from node k: offsets in {-1, 0, 1}.
                     const int di = l % 2 - k % 2, dj = l / 2 - k / 2;
-                    a( i, j, 3 * ( di + 1 ) + dj + 1 ) +=
-                        flow * ( dwdx[k] * dwdx[l] + dwdy[k] * dwdy[l] );
+                    access.add( node, 3 * ( di + 1 ) + dj + 1,
+                                flow *
+                                    ( dwdx[k] * dwdx[l] + dwdy[k] * dwdy[l] ) );
                 }
             }
         } );
-    Kokkos::Experimental::contribute( s.a, a_sv );
+    const int count = sums.sums.listTouched( exec, sums.touched );
+    const auto touched = unmanaged( sums.touched );
+    const auto a = unmanaged( s.a );
+    Kokkos::parallel_for(
+        "mpm::pressure_stencil_rows",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, count ),
+        KOKKOS_LAMBDA( const int m ) {
+            const int node = touched( m );
+            for ( int k = 0; k < 9; ++k )
+                a( node / ny1, node % ny1, k ) = handle.take( node, k );
+        } );
 }
 
 } // namespace mpm

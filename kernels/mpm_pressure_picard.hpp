@@ -65,14 +65,20 @@ void picardStorageSums( const ExecSpace& exec,
             const double dp_p = interpolateAt( stencil, dp );
             const double n = water_points.n_p( p );
             const double S = water_points.S_p( p );
-            double chord =
-                physics::waterStorage( n, S, water_points.dS_dp_p( p ), K_w );
+            const double dS_dp = water_points.dS_dp_p( p );
+            const double p_w = water_points.p_w_p( p );
+            const physics::RetentionParams& retention =
+                materials[points.material_p( p )].retention;
+            double chord = physics::waterStorage( n, S, dS_dp, K_w );
             double tangent = chord;
-            if ( !saturated && dp_p != 0.0 )
+            // Saturated at both ends (S = s_sat, dS/dp_w = 0 at p_w and
+            // p_w + dp_p >= 0): the storage n S / K_w is linear.
+            const bool stays_saturated = p_w >= 0.0 && p_w + dp_p >= 0.0 &&
+                                         S == retention.s_sat && dS_dp == 0.0;
+            if ( !saturated && dp_p != 0.0 && !stays_saturated )
             {
                 const physics::SaturationState state =
-                    RetentionAt{ materials[points.material_p( p )].retention }(
-                        water_points.p_w_p( p ) + dp_p );
+                    RetentionAt{ retention }( p_w + dp_p );
                 chord = physics::storedWaterChange( n, S, state.S, dp_p, K_w ) /
                         dp_p;
                 tangent = physics::waterStorage( n, state.S, state.dS_dp, K_w );

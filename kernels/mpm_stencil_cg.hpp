@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace mpm
 {
@@ -118,38 +119,64 @@ double dotOverNodes( const ExecSpace& exec,
         sum );
     return sum;
 }
+
+//! Sum over the unknowns of |u|.
+template <class ExecSpace, class NodeView>
+double absSumOverNodes( const ExecSpace& exec,
+                        const NodeStencilSystem<ExecSpace>& s,
+                        const NodeView& u )
+{
+    const auto nodes = unmanaged( s.nodes );
+    const auto uu = unmanaged( u );
+    const int ny1 = static_cast<int>( u.extent( 1 ) );
+    double sum = 0.0;
+    Kokkos::parallel_reduce(
+        "cg_abs_sum", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m, double& acc ) {
+            const int n = nodes( m );
+            acc += Kokkos::Experimental::fabs( uu( n / ny1, n % ny1 ) );
+        },
+        sum );
+    return sum;
+}
 } // namespace Impl
 
 /*!
-  \brief Work vectors of the solve: residual r, preconditioned residual
-  z = M^-1 r, w = A z, search direction p and s = A p; only their values on
-  the unknowns are used, and z is zero off them (it is read as a neighbour
-  in A z). `ij`: the grid indices of the unknowns; `partial`: each
-  thread's share of an iteration's sums, two buffers of `threads` rows;
-  `result`: what a solve reports (TeamCg).
+  \brief Work vectors of the solve, over the unknowns in the order of the
+  system's `nodes` (index m): residual r, w = A z, search direction p,
+  s = A p and the inverse of A's diagonal; the preconditioned residual
+  z = M^-1 r over the grid nodes (read as a neighbour in A z: zero off the
+  unknowns). `rows`: each unknown's flat node index and 1 if all 8 of its
+  neighbours lie inside the grid; `partial`: each thread's share of an
+  iteration's sums, two buffers of `threads` rows; `result`: what a solve
+  reports (TeamCg).
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct CgWorkspace
 {
+    using vector = Kokkos::View<double*, DeviceType<ExecSpace>, MemoryTraits>;
     using view = Kokkos::View<double**, DeviceType<ExecSpace>, MemoryTraits>;
     using sums_view =
         Kokkos::View<double* [3], DeviceType<ExecSpace>, MemoryTraits>;
     //! iterations, |r|^2, |b|^2 and 1 if converged, else 0.
     using result_view =
         Kokkos::View<double[4], DeviceType<ExecSpace>, MemoryTraits>;
-    view r, z, w, p, s;
-    Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> ij;
+    vector r, w, p, s, inverse_diagonal;
+    view z;
+    Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> rows;
     sums_view partial;
     result_view result;
     int threads = 1;
+
     CgWorkspace() = default;
     CgWorkspace( const int nx, const int ny )
-        : r( "cg_r", nx + 1, ny + 1 )
+        : r( "cg_r", ( nx + 1 ) * ( ny + 1 ) )
+        , w( "cg_w", ( nx + 1 ) * ( ny + 1 ) )
+        , p( "cg_p", ( nx + 1 ) * ( ny + 1 ) )
+        , s( "cg_s", ( nx + 1 ) * ( ny + 1 ) )
+        , inverse_diagonal( "cg_inverse_diagonal", ( nx + 1 ) * ( ny + 1 ) )
         , z( "cg_z", nx + 1, ny + 1 )
-        , w( "cg_w", nx + 1, ny + 1 )
-        , p( "cg_p", nx + 1, ny + 1 )
-        , s( "cg_s", nx + 1, ny + 1 )
-        , ij( "cg_ij", ( nx + 1 ) * ( ny + 1 ) )
+        , rows( "cg_rows", ( nx + 1 ) * ( ny + 1 ) )
         , partial( "cg_partial_sums", 2 * ExecSpace::concurrency() )
         , result( "cg_result" )
         , threads( ExecSpace::concurrency() )
@@ -164,11 +191,12 @@ unmanaged( const CgWorkspace<ExecSpace>& w )
 {
     CgWorkspace<ExecSpace, Kokkos::MemoryUnmanaged> u;
     u.r = w.r;
-    u.z = w.z;
     u.w = w.w;
     u.p = w.p;
     u.s = w.s;
-    u.ij = w.ij;
+    u.inverse_diagonal = w.inverse_diagonal;
+    u.z = w.z;
+    u.rows = w.rows;
     u.partial = w.partial;
     u.result = w.result;
     u.threads = w.threads;
@@ -184,6 +212,42 @@ struct CgSums
     double gamma = 0.0, delta = 0.0, rr = 0.0;
 };
 
+//! Row n of the 9-point stencil times x, flat indices (ny1 nodes a column):
+//! all 9 neighbours unchecked (an interior node).
+KOKKOS_INLINE_FUNCTION double interiorRow( const double* a, const double* x,
+                                           const int n, const int ny1 )
+{
+    const double* c = a + 9 * n;
+    const double* below = x + n - ny1;
+    const double* here = x + n;
+    const double* above = x + n + ny1;
+    // Three independent row sums: a shorter chain of dependent adds.
+    const double sum_below =
+        c[0] * below[-1] + c[1] * below[0] + c[2] * below[1];
+    const double sum_here = c[3] * here[-1] + c[4] * here[0] + c[5] * here[1];
+    const double sum_above =
+        c[6] * above[-1] + c[7] * above[0] + c[8] * above[1];
+    return ( sum_below + sum_here ) + sum_above;
+}
+
+//! Row n of the 9-point stencil times x, neighbours outside the grid
+//! (nx1 x ny1 nodes) skipped.
+KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
+                                       const int n, const int nx1,
+                                       const int ny1 )
+{
+    const int i = n / ny1, j = n % ny1;
+    double sum = 0.0;
+    for ( int di = -1; di <= 1; ++di )
+        for ( int dj = -1; dj <= 1; ++dj )
+        {
+            const int ii = i + di, jj = j + dj;
+            if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
+                sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
+        }
+    return sum;
+}
+
 /*!
   \brief solveJacobiCg in one kernel launch: one team whose threads share
   the unknowns (TeamThreadRange: the same share in every phase). They meet
@@ -192,7 +256,9 @@ struct CgSums
   partials in the same order, so all take the same alpha, beta and stopping
   decision. One launch per solve instead of two per iteration and five to
   start: a 6-iteration solve on 1,089 unknowns took 72 us on 2 threads
-  against 131 us with a kernel per phase (docs/formulation.md §9).
+  against 131 us with a kernel per phase (docs/formulation.md §9). The
+  phases work on raw pointers (flat node indices, the work vectors in the
+  unknowns' order), which the compiler keeps in registers.
 */
 template <class ExecSpace, class NodeView>
 struct TeamCg
@@ -229,72 +295,93 @@ struct TeamCg
         return all;
     }
 
-    //! f(i, j) for this thread's share of the unknowns (v.ij).
+    //! f(m) for this thread's share of the unknowns: the same contiguous
+    //! range in every phase.
     template <class F>
     KOKKOS_INLINE_FUNCTION void forMyNodes( const member_type& team,
                                             const F& f ) const
     {
-        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, num_nodes ),
-                              [&]( const int m )
-                              { f( v.ij( m, 0 ), v.ij( m, 1 ) ); } );
-    }
-
-    //! w = A z on this thread's unknowns and its share of CgSums.
-    KOKKOS_INLINE_FUNCTION CgSums products( const member_type& team ) const
-    {
-        CgSums mine;
-        forMyNodes( team,
-                    [&]( const int i, const int j )
-                    {
-                        const double az = stencilRow( a, v.z, i, j );
-                        v.w( i, j ) = az;
-                        mine.gamma += v.r( i, j ) * v.z( i, j );
-                        mine.delta += az * v.z( i, j );
-                        mine.rr += v.r( i, j ) * v.r( i, j );
-                    } );
-        return mine;
+        const int chunk =
+            ( num_nodes + team.team_size() - 1 ) / team.team_size();
+        const int first = team.team_rank() * chunk;
+        const int begin = first < num_nodes ? first : num_nodes;
+        const int end = begin + chunk < num_nodes ? begin + chunk : num_nodes;
+        for ( int m = begin; m < end; ++m )
+            f( m );
     }
 
     KOKKOS_INLINE_FUNCTION void operator()( const member_type& team ) const
     {
-        int buffer = 0;
-        // The unknowns' grid indices (the same share of them as every
-        // phase's); z = 0 off the unknowns (read as a neighbour), x on them;
-        // p = s = 0.
+        const int nx1 = static_cast<int>( a.extent( 0 ) );
         const int ny1 = static_cast<int>( a.extent( 1 ) );
-        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, num_nodes ),
-                              [&]( const int m )
-                              {
-                                  v.ij( m, 0 ) = nodes( m ) / ny1;
-                                  v.ij( m, 1 ) = nodes( m ) % ny1;
-                              } );
-        const int grid_nodes = static_cast<int>( a.extent( 0 ) ) * ny1;
-        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, grid_nodes ),
-                              [&]( const int n )
-                              { v.z( n / ny1, n % ny1 ) = 0.0; } );
-        team.team_barrier();
+        const double* const A = a.data();
+        const double* const B = b.data();
+        double* const X = x.data();
+        double* const Z = v.z.data();
+        double* const R = v.r.data();
+        double* const W = v.w.data();
+        double* const P = v.p.data();
+        double* const S = v.s.data();
+        double* const D = v.inverse_diagonal.data();
+        int* const N =
+            v.rows.data(); // N[2 m]: flat index, N[2 m + 1]: interior
+        // A z at unknown m (its flat index n).
+        const auto row = [=]( const int m, const int n )
+        {
+            return N[2 * m + 1] ? interiorRow( A, Z, n, ny1 )
+                                : edgeRow( A, Z, n, nx1, ny1 );
+        };
+        int buffer = 0;
+        // The unknowns' rows and inverse diagonals; z = 0 off the unknowns
+        // (read as a neighbour), x on them; p = s = 0.
         forMyNodes( team,
-                    [&]( const int i, const int j )
+                    [=]( const int m )
                     {
-                        v.z( i, j ) = x( i, j );
-                        v.p( i, j ) = 0.0;
-                        v.s( i, j ) = 0.0;
+                        const int n = nodes( m );
+                        const int i = n / ny1, j = n % ny1;
+                        N[2 * m] = n;
+                        N[2 * m + 1] =
+                            i > 0 && i < nx1 - 1 && j > 0 && j < ny1 - 1;
+                        D[m] = 1.0 / A[9 * n + 4];
+                        P[m] = 0.0;
+                        S[m] = 0.0;
                     } );
+        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, nx1 * ny1 ),
+                              [=]( const int n ) { Z[n] = 0.0; } );
+        team.team_barrier();
+        forMyNodes( team, [=]( const int m ) { Z[N[2 * m]] = X[N[2 * m]]; } );
         team.team_barrier();
         // r = b - A x and |b|^2; then z = M^-1 r (after every thread has
         // read its neighbours' z = x).
-        CgSums mine;
+        double bb_mine = 0.0;
         forMyNodes( team,
-                    [&]( const int i, const int j )
+                    [&]( const int m )
                     {
-                        v.r( i, j ) = b( i, j ) - stencilRow( a, v.z, i, j );
-                        mine.rr += b( i, j ) * b( i, j );
+                        const int n = N[2 * m];
+                        R[m] = B[n] - row( m, n );
+                        bb_mine += B[n] * B[n];
                     } );
-        const double bb = teamSums( team, mine, buffer ).rr;
-        forMyNodes( team, [&]( const int i, const int j )
-                    { v.z( i, j ) = v.r( i, j ) / a( i, j, 4 ); } );
+        const double bb =
+            teamSums( team, CgSums{ 0.0, 0.0, bb_mine }, buffer ).rr;
+        forMyNodes( team, [=]( const int m ) { Z[N[2 * m]] = R[m] * D[m]; } );
         team.team_barrier();
-        CgSums sums = teamSums( team, products( team ), buffer );
+        // w = A z and this thread's share of the sums.
+        const auto products = [&]()
+        {
+            double gamma = 0.0, delta = 0.0, rr = 0.0;
+            forMyNodes( team,
+                        [&]( const int m )
+                        {
+                            const int n = N[2 * m];
+                            const double az = row( m, n );
+                            W[m] = az;
+                            gamma += R[m] * Z[n];
+                            delta += az * Z[n];
+                            rr += R[m] * R[m];
+                        } );
+            return CgSums{ gamma, delta, rr };
+        };
+        CgSums sums = teamSums( team, products(), buffer );
 
         const double target = tolerance * Kokkos::Experimental::sqrt( bb );
         double gamma_old = 1.0, alpha_old = 1.0;
@@ -306,18 +393,19 @@ struct TeamCg
             const double alpha =
                 sums.gamma / ( sums.delta - beta * sums.gamma / alpha_old );
             forMyNodes( team,
-                        [&]( const int i, const int j )
+                        [=]( const int m )
                         {
-                            v.p( i, j ) = v.z( i, j ) + beta * v.p( i, j );
-                            v.s( i, j ) = v.w( i, j ) + beta * v.s( i, j );
-                            x( i, j ) += alpha * v.p( i, j );
-                            v.r( i, j ) -= alpha * v.s( i, j );
-                            v.z( i, j ) = v.r( i, j ) / a( i, j, 4 );
+                            const int n = N[2 * m];
+                            P[m] = Z[n] + beta * P[m];
+                            S[m] = W[m] + beta * S[m];
+                            X[n] += alpha * P[m];
+                            R[m] -= alpha * S[m];
+                            Z[n] = R[m] * D[m];
                         } );
             team.team_barrier();
             gamma_old = sums.gamma;
             alpha_old = alpha;
-            sums = teamSums( team, products( team ), buffer );
+            sums = teamSums( team, products(), buffer );
             ++iterations;
         }
         if ( team.team_rank() == 0 )
@@ -349,6 +437,10 @@ solveJacobiCg( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
                const NodeView& b, const NodeView& x, CgWorkspace<ExecSpace>& w,
                const double tolerance, const int max_iterations )
 {
+    // TeamCg reads b and x by flat node index.
+    static_assert( std::is_same<typename NodeView::array_layout,
+                                Kokkos::LayoutRight>::value,
+                   "solveJacobiCg: b and x must be LayoutRight node views" );
     using Solve = Impl::TeamCg<ExecSpace, NodeView>;
     const Solve solve{ unmanaged( s.a ), unmanaged( s.nodes ), unmanaged( w ),
                        unmanaged( b ),   unmanaged( x ),       s.num_nodes,

@@ -48,9 +48,10 @@ TYPED_TEST( PressureAssembly, gauss_points_give_the_bilinear_stencil )
     Kokkos::deep_copy( m_p, mobility );
 
     mpm::NodeStencilSystem<exec_space> system( grid.nx, grid.ny, 1 );
+    mpm::PressureStencilSums<exec_space> sums( grid );
     // Storage off: the flow part alone.
     mpm::assemblePressureStencil( exec_space(), points, m_p, c_p, grid, dt,
-                                  system );
+                                  sums, system );
     auto a =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), system.a );
     const double unit = dt * mobility;
@@ -78,7 +79,7 @@ TYPED_TEST( PressureAssembly, gauss_points_give_the_bilinear_stencil )
     // With storage: the lumped C h^2 / Dt on the diagonal only.
     Kokkos::deep_copy( c_p, storage );
     mpm::assemblePressureStencil( exec_space(), points, m_p, c_p, grid, dt,
-                                  system );
+                                  sums, system );
     Kokkos::deep_copy( a, system.a );
     EXPECT_NEAR( a( 3, 3, 4 ), unit * 8.0 / 3.0 + storage * h * h / dt,
                  1e-12 * unit );

@@ -393,7 +393,7 @@ struct SolverConfig
     double pressure_max_iterations = 2000.0;
     //! Semi-implicit: modified Picard stops at a water residual |R| <= this
     //! |b| (b the step's predicted water volume rates at the nodes).
-    double pressure_picard_tolerance = 1.0e-6;
+    double pressure_picard_tolerance = 1.0e-4;
 };
 
 //! A tracked material point: the one nearest to position_m when the run

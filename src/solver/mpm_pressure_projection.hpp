@@ -35,6 +35,9 @@ struct PressureSolveStats
     long picard_halvings = 0;           //!< line-search halvings, all steps
     //! Worst water residual |R| / |b| a step ended with.
     double max_picard_residual = 0.0;
+    //! Water the steps' final residuals left unbalanced, sum of |R_I| dt
+    //! over the unknowns and steps, m^3 per m of thickness.
+    double unbalanced_water = 0.0;
 };
 
 //! Settings of the semi-implicit pressure solve (SolverConfig).
@@ -44,6 +47,9 @@ struct PressureSolveSettings
     int cg_max_iterations;   //!< CG iterations of one linear solve
     double picard_tolerance; //!< Picard: |R| <= this |b|
     static constexpr int max_picard_iterations = 50;
+    //! Loosest stopping ratio of a linear solve after the first (the
+    //! inexact Newton forcing term's cap).
+    static constexpr double max_forcing = 0.1;
 };
 
 //! The pressure solve's settings of a case's [solver].
@@ -77,6 +83,7 @@ class PressureProjection
     PressureProjection( const physics::GridGeometry& grid,
                         const int num_points )
         : _terms( grid, num_points )
+        , _stencil_sums( grid )
         , _system( grid.nx, grid.ny, grid.numNodes() )
         , _work( grid.nx, grid.ny )
         , _b_i( "pressure_b_i", grid.nx + 1, grid.ny + 1 )
@@ -118,7 +125,7 @@ class PressureProjection
         pressurePointTerms( exec, pv, wv, gv, wg, materials, water,
                             inertia_scaling, dt, source, _terms );
         assemblePressureStencil( exec, pv, _terms.mobility_p, _terms.storage_p,
-                                 gv.geometry, dt, _system );
+                                 gv.geometry, dt, _stencil_sums, _system );
         listPressureUnknowns( exec, gv, wg, _terms, _b_i, _dp_i, _storage_i,
                               _system );
         if ( _system.num_nodes > 0 )
@@ -127,6 +134,8 @@ class PressureProjection
                 exec, pv, wv, gv, materials, water, saturated, dt, settings );
             if ( residual > settings.picard_tolerance )
                 ++_stats.picard_unconverged;
+            _stats.unbalanced_water +=
+                dt * Impl::absSumOverNodes( exec, _system, _residual_i );
             _stats.max_picard_residual =
                 std::max( _stats.max_picard_residual, residual );
         }
@@ -184,13 +193,20 @@ class PressureProjection
         }
         int picard = 0;
         const double target = settings.picard_tolerance * b_norm;
+        // The linear solve's stopping ratio beyond the first (inexact
+        // Newton, Eisenstat & Walker 1996, choice 1): how far the last
+        // linear model missed the new water residual, ||R| - |r_lin|| /
+        // |R_old|.
+        double forcing = 0.0;
         while ( residual_norm > target &&
                 picard < PressureSolveSettings::max_picard_iterations )
         {
             // Solve only as far as the water residual needs: a linear step
-            // solved to 0.5 target / |R| would meet the target at once.
-            const double cg_tolerance =
-                std::max( settings.cg_tolerance, 0.5 * target / residual_norm );
+            // solved to 0.5 target / |R| would meet the target at once; no
+            // further than the linear model is right.
+            const double cg_tolerance = std::max(
+                { settings.cg_tolerance, 0.5 * target / residual_norm,
+                  std::min( forcing, PressureSolveSettings::max_forcing ) } );
             Kokkos::deep_copy( exec, _e_i, 0.0 );
             _last = solveJacobiCg( exec, _system, _residual_i, _e_i, _work,
                                    cg_tolerance, settings.cg_max_iterations );
@@ -213,6 +229,10 @@ class PressureProjection
                                                    water, saturated, dt );
                 if ( norm < residual_norm || halving == 6 )
                 {
+                    forcing = halving == 0
+                                  ? std::abs( norm - _last.residual_norm ) /
+                                        residual_norm
+                                  : PressureSolveSettings::max_forcing;
                     residual_norm = norm;
                     _stats.picard_halvings += halving;
                     break;
@@ -245,6 +265,7 @@ class PressureProjection
     }
 
     PressurePointTerms<ExecSpace> _terms;
+    PressureStencilSums<ExecSpace> _stencil_sums;
     NodeStencilSystem<ExecSpace> _system;
     CgWorkspace<ExecSpace> _work;
     node_view _b_i, _dp_i;

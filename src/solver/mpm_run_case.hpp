@@ -428,7 +428,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
             { "picard_solves_max", solves->max_picard_iterations },
             { "picard_halvings_total", solves->picard_halvings },
             { "picard_unconverged_steps", solves->picard_unconverged },
-            { "picard_worst_water_residual", solves->max_picard_residual } };
+            { "picard_worst_water_residual", solves->max_picard_residual },
+            { "picard_unbalanced_water_m3_per_m", solves->unbalanced_water } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );
