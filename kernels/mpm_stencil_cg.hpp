@@ -218,16 +218,15 @@ KOKKOS_INLINE_FUNCTION double interiorRow( const double* a, const double* x,
                                            const int n, const int ny1 )
 {
     const double* c = a + 9 * n;
-    const double* below = x + n - ny1;
+    const double* left = x + n - ny1; // column i - 1: nodes j - 1, j, j + 1
     const double* here = x + n;
-    const double* above = x + n + ny1;
-    // Three independent row sums: a shorter chain of dependent adds.
-    const double sum_below =
-        c[0] * below[-1] + c[1] * below[0] + c[2] * below[1];
+    const double* right = x + n + ny1;
+    // The three columns' sums, then their sum.
+    const double sum_left = c[0] * left[-1] + c[1] * left[0] + c[2] * left[1];
     const double sum_here = c[3] * here[-1] + c[4] * here[0] + c[5] * here[1];
-    const double sum_above =
-        c[6] * above[-1] + c[7] * above[0] + c[8] * above[1];
-    return ( sum_below + sum_here ) + sum_above;
+    const double sum_right =
+        c[6] * right[-1] + c[7] * right[0] + c[8] * right[1];
+    return ( sum_left + sum_here ) + sum_right;
 }
 
 //! Row n of the 9-point stencil times x, neighbours outside the grid
