@@ -55,28 +55,45 @@ struct CgReport
 
 namespace Impl
 {
-//! (A x)_ij: row (i, j) of the 9-point stencil a times x (neighbours
-//! outside the grid skipped; an interior node takes all 9 unchecked).
-template <class StencilView, class NodeView>
-KOKKOS_INLINE_FUNCTION double
-stencilRow( const StencilView& a, const NodeView& x, const int i, const int j )
+//! Node n (flat index, nx1 x ny1 nodes) has all 8 neighbours in the grid.
+KOKKOS_INLINE_FUNCTION bool isInteriorNode( const int n, const int nx1,
+                                            const int ny1 )
 {
-    const int nx1 = static_cast<int>( a.extent( 0 ) );
-    const int ny1 = static_cast<int>( a.extent( 1 ) );
+    const int i = n / ny1, j = n % ny1;
+    return i > 0 && i < nx1 - 1 && j > 0 && j < ny1 - 1;
+}
+
+//! Row n of the 9-point stencil times x, flat indices (ny1 nodes a column):
+//! all 9 neighbours unchecked (an interior node).
+KOKKOS_INLINE_FUNCTION double interiorRow( const double* a, const double* x,
+                                           const int n, const int ny1 )
+{
+    const double* c = a + 9 * n;
+    const double* left = x + n - ny1; // column i - 1: nodes j - 1, j, j + 1
+    const double* here = x + n;
+    const double* right = x + n + ny1;
+    // The three columns' sums, then their sum.
+    const double sum_left = c[0] * left[-1] + c[1] * left[0] + c[2] * left[1];
+    const double sum_here = c[3] * here[-1] + c[4] * here[0] + c[5] * here[1];
+    const double sum_right =
+        c[6] * right[-1] + c[7] * right[0] + c[8] * right[1];
+    return ( sum_left + sum_here ) + sum_right;
+}
+
+//! Row n of the 9-point stencil times x, neighbours outside the grid
+//! (nx1 x ny1 nodes) skipped.
+KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
+                                       const int n, const int nx1,
+                                       const int ny1 )
+{
+    const int i = n / ny1, j = n % ny1;
     double sum = 0.0;
-    if ( i > 0 && i < nx1 - 1 && j > 0 && j < ny1 - 1 )
-    {
-        for ( int di = -1; di <= 1; ++di )
-            for ( int dj = -1; dj <= 1; ++dj )
-                sum += a( i, j, 3 * ( di + 1 ) + dj + 1 ) * x( i + di, j + dj );
-        return sum;
-    }
     for ( int di = -1; di <= 1; ++di )
         for ( int dj = -1; dj <= 1; ++dj )
         {
             const int ii = i + di, jj = j + dj;
             if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
-                sum += a( i, j, 3 * ( di + 1 ) + dj + 1 ) * x( ii, jj );
+                sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
         }
     return sum;
 }
@@ -86,16 +103,22 @@ template <class ExecSpace, class NodeView>
 void applyStencil( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
                    const NodeView& x, const NodeView& y )
 {
-    const auto a = unmanaged( s.a );
+    static_assert( std::is_same<typename NodeView::array_layout,
+                                Kokkos::LayoutRight>::value,
+                   "applyStencil: x and y must be LayoutRight node views" );
     const auto nodes = unmanaged( s.nodes );
-    const auto xu = unmanaged( x );
-    const auto yu = unmanaged( y );
-    const int ny1 = static_cast<int>( a.extent( 1 ) );
+    const double* const a = s.a.data();
+    const double* const xp = x.data();
+    double* const yp = y.data();
+    const int nx1 = static_cast<int>( s.a.extent( 0 ) );
+    const int ny1 = static_cast<int>( s.a.extent( 1 ) );
     Kokkos::parallel_for(
         "cg_apply", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
         KOKKOS_LAMBDA( const int m ) {
-            const int i = nodes( m ) / ny1, j = nodes( m ) % ny1;
-            yu( i, j ) = stencilRow( a, xu, i, j );
+            const int n = nodes( m );
+            yp[n] = isInteriorNode( n, nx1, ny1 )
+                        ? interiorRow( a, xp, n, ny1 )
+                        : edgeRow( a, xp, n, nx1, ny1 );
         } );
 }
 
@@ -212,41 +235,6 @@ struct CgSums
     double gamma = 0.0, delta = 0.0, rr = 0.0;
 };
 
-//! Row n of the 9-point stencil times x, flat indices (ny1 nodes a column):
-//! all 9 neighbours unchecked (an interior node).
-KOKKOS_INLINE_FUNCTION double interiorRow( const double* a, const double* x,
-                                           const int n, const int ny1 )
-{
-    const double* c = a + 9 * n;
-    const double* left = x + n - ny1; // column i - 1: nodes j - 1, j, j + 1
-    const double* here = x + n;
-    const double* right = x + n + ny1;
-    // The three columns' sums, then their sum.
-    const double sum_left = c[0] * left[-1] + c[1] * left[0] + c[2] * left[1];
-    const double sum_here = c[3] * here[-1] + c[4] * here[0] + c[5] * here[1];
-    const double sum_right =
-        c[6] * right[-1] + c[7] * right[0] + c[8] * right[1];
-    return ( sum_left + sum_here ) + sum_right;
-}
-
-//! Row n of the 9-point stencil times x, neighbours outside the grid
-//! (nx1 x ny1 nodes) skipped.
-KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
-                                       const int n, const int nx1,
-                                       const int ny1 )
-{
-    const int i = n / ny1, j = n % ny1;
-    double sum = 0.0;
-    for ( int di = -1; di <= 1; ++di )
-        for ( int dj = -1; dj <= 1; ++dj )
-        {
-            const int ii = i + di, jj = j + dj;
-            if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
-                sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
-        }
-    return sum;
-}
-
 /*!
   \brief solveJacobiCg in one kernel launch: one team whose threads share
   the unknowns (TeamThreadRange: the same share in every phase). They meet
@@ -337,10 +325,8 @@ struct TeamCg
                     [=]( const int m )
                     {
                         const int n = nodes( m );
-                        const int i = n / ny1, j = n % ny1;
                         N[2 * m] = n;
-                        N[2 * m + 1] =
-                            i > 0 && i < nx1 - 1 && j > 0 && j < ny1 - 1;
+                        N[2 * m + 1] = isInteriorNode( n, nx1, ny1 );
                         D[m] = 1.0 / A[9 * n + 4];
                         P[m] = 0.0;
                         S[m] = 0.0;
