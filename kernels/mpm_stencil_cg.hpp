@@ -171,7 +171,7 @@ double absSumOverNodes( const ExecSpace& exec,
   z = M^-1 r over the grid nodes (read as a neighbour in A z: zero off the
   unknowns). `rows`: each unknown's flat node index and 1 if all 8 of its
   neighbours lie inside the grid; `partial`: each thread's share of an
-  iteration's sums, two buffers of `threads` rows; `result`: what a solve
+  iteration's sums, two buffers of a row per thread; `result`: what a solve
   reports (TeamCg).
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
@@ -189,7 +189,6 @@ struct CgWorkspace
     Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> rows;
     sums_view partial;
     result_view result;
-    int threads = 1;
 
     CgWorkspace() = default;
     CgWorkspace( const int nx, const int ny )
@@ -202,7 +201,6 @@ struct CgWorkspace
         , rows( "cg_rows", ( nx + 1 ) * ( ny + 1 ) )
         , partial( "cg_partial_sums", 2 * ExecSpace::concurrency() )
         , result( "cg_result" )
-        , threads( ExecSpace::concurrency() )
     {
     }
 };
@@ -222,7 +220,6 @@ unmanaged( const CgWorkspace<ExecSpace>& w )
     u.rows = w.rows;
     u.partial = w.partial;
     u.result = w.result;
-    u.threads = w.threads;
     return u;
 }
 
@@ -414,7 +411,7 @@ struct TeamCg
   arithmetic, with s = A p kept by recurrence so that each iteration is one
   update and one pass that forms w = A z with all three of its sums. The
   whole solve is one kernel launch (Impl::TeamCg: one team of up to
-  `w.threads` threads).
+  ExecSpace's concurrency threads).
 */
 template <class ExecSpace, class NodeView>
 CgReport
@@ -431,8 +428,10 @@ solveJacobiCg( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
                        unmanaged( b ),   unmanaged( x ),       s.num_nodes,
                        tolerance,        max_iterations };
     const Kokkos::TeamPolicy<ExecSpace> probe( exec, 1, 1 );
-    const int threads = std::min(
-        w.threads, probe.team_size_max( solve, Kokkos::ParallelForTag() ) );
+    // As many threads as `partial` has rows in each of its two buffers.
+    const int threads =
+        std::min( static_cast<int>( w.partial.extent( 0 ) ) / 2,
+                  probe.team_size_max( solve, Kokkos::ParallelForTag() ) );
     Kokkos::parallel_for(
         "cg_solve", Kokkos::TeamPolicy<ExecSpace>( exec, 1, threads ), solve );
     exec.fence();
