@@ -2,7 +2,6 @@
 #define MPM_PORE_PRESSURE_HPP
 
 #include <mpm_particle_views.hpp>
-#include <mpm_point_stencil.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_kinematics.hpp>
@@ -57,7 +56,7 @@ struct RetentionAt
   or were given to `volumes` (physics::addPointStepWater; the point volumes
   are those at the step's start). With `projected` (the semi-implicit
   scheme, docs/formulation.md §9) the increment is not Eq. 8 at the point
-  but the nodal pressure solve's, dp = sum_I N_I dp_I at the point's
+  but the pressure solve's increment of the point's cell, dp_c at its
   start-of-step position, and what the point's water changed by,
   n (S' - S) + n S dp / K_w, is what the ledger books as its volume change.
 */
@@ -79,19 +78,18 @@ struct PorePressurePointUpdate
     UnmanagedView<FlagView> prescribed_hold;
     UnmanagedView<RateView> inflow_rate;
     UnmanagedView<FlagView> inflow_ponding;
-    //! The semi-implicit scheme: the nodal increments and their grid.
+    //! The semi-implicit scheme: the cells' increments and their grid.
     bool projected = false;
-    UnmanagedView<Kokkos::View<double**, DeviceType<ExecSpace>>> dp_i;
+    UnmanagedView<Kokkos::View<double**, DeviceType<ExecSpace>>> dp_c;
     UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> x_p;
     physics::GridGeometry grid{};
 
-    //! The nodal increments dp_i at point q (projected).
-    KOKKOS_INLINE_FUNCTION double nodalIncrement( const int q ) const
+    //! The increment dp_c of point q's cell (projected).
+    KOKKOS_INLINE_FUNCTION double cellIncrement( const int q ) const
     {
-        PointStencil stencil;
-        grid.weights( x_p( q, 0 ), x_p( q, 1 ), stencil.ci, stencil.cj,
-                      stencil.w, stencil.dwdx, stencil.dwdy );
-        return interpolateAt( stencil, dp_i );
+        int ci, cj;
+        return grid.cellOf( x_p( q, 0 ), x_p( q, 1 ), ci, cj ) ? dp_c( ci, cj )
+                                                               : 0.0;
     }
 
     //! Water volume inflow `inflow` adds to point q per unit volume, 1/s.
@@ -136,7 +134,7 @@ struct PorePressurePointUpdate
             // increment; projected: the nodal solve's.
             newton[l].done = saturated || condition_p( q ) >= 0 || projected;
             if ( projected )
-                newton[l].dp = nodalIncrement( q );
+                newton[l].dp = cellIncrement( q );
         }
         physics::porePressureIncrements( retention, newton, stored,
                                          retention_current );

@@ -33,31 +33,35 @@ using PressureForceSums = GridScatter<ExecSpace, PressureForceField::count>;
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The nodal forces of the pressure increment dp_i (docs/formulation.md
-  §9, item 2), formed as step 1 forms those of p_w: with dp_p = sum_I N_I
-  dp_I at each point, the water force per unit water volume fraction
+  \brief The nodal forces of the cells' pressure increments dp_c
+  (docs/formulation.md §9, item 2), formed as step 1 forms those of p_w:
+  each point with a free p_w takes its cell's dp_c (a point whose p_w is
+  prescribed, none), the water force per unit water volume fraction
   sum_p dp_p V grad N and the mixture force of Bishop's total stress,
   sum_p S dp_p V grad N. So the corrected velocities are those step 2 gives
   with p_w + dp at the points.
 */
-template <class ExecSpace, class NodeView>
+template <class ExecSpace, class CellView>
 void scatterPressureForces( const ExecSpace& exec,
                             const ParticleViews<ExecSpace>& pv,
                             const WaterParticleViews<ExecSpace>& wv,
                             const physics::GridGeometry& grid,
-                            const NodeView& dp_i,
+                            const CellView& dp_c,
                             const PressureForceSums<ExecSpace>& forces )
 {
     using F = PressureForceField;
     const auto sums = forces.handle();
     const auto vol_p = unmanaged( pv.vol_p );
     const auto S_p = unmanaged( wv.S_p );
-    const auto dp = unmanaged( dp_i );
+    const auto condition_p = unmanaged( wv.p_w_condition_p );
+    const auto dp = unmanaged( dp_c );
     forEachPointStencil(
         "mpm::pressure_forces", exec, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
             const auto& [ci, cj, w, dwdx, dwdy] = stencil;
-            const double water = interpolateAt( stencil, dp ) * vol_p( p );
+            if ( condition_p( p ) >= 0 )
+                return;
+            const double water = dp( ci, cj ) * vol_p( p );
             const double mixture = S_p( p ) * water;
             auto access = sums.access();
             for ( int k = 0; k < 4; ++k )

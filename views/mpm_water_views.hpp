@@ -102,13 +102,14 @@ struct WaterGridViews
     //! to the solid's (impermeable).
     int_view flags_w_i;
     scalar_view div_w_c; //!< B-bar: volume-weighted water divergence per cell
-    //! Semi-implicit: the pore-pressure increment of the last step's
-    //! solve, Pa (the next solve starts from it).
-    scalar_view dp_w_i;
+    //! Semi-implicit: each cell's pore-pressure increment of the last
+    //! step's solve, Pa (the next solve starts from it).
+    scalar_view dp_w_c;
 
     WaterGridViews() = default;
 
-    //! Allocates every View on the nodes (on the cells: div_w_c) of `grid`.
+    //! Allocates every View on the nodes (on the cells: div_w_c, dp_w_c) of
+    //! `grid`.
     explicit WaterGridViews( const physics::GridGeometry& grid )
     {
         allocateGridViews( *this, grid );
@@ -129,7 +130,7 @@ struct WaterGridViews
         f( "dv_w_i", wg.dv_w_i... );
         f( "flags_w_i", wg.flags_w_i... );
         f( "div_w_c", wg.div_w_c... );
-        f( "dp_w_i", wg.dp_w_i... );
+        f( "dp_w_c", wg.dp_w_c... );
     }
 };
 

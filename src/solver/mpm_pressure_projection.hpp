@@ -4,9 +4,9 @@
 #include <io/mpm_case_config.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
-#include <mpm_pressure_assembly.hpp>
 #include <mpm_pressure_correction.hpp>
-#include <mpm_pressure_picard.hpp>
+#include <mpm_pressure_newton.hpp>
+#include <mpm_pressure_operator.hpp>
 #include <mpm_pressure_terms.hpp>
 #include <mpm_stencil_cg.hpp>
 #include <mpm_water_views.hpp>
@@ -28,13 +28,13 @@ struct PressureSolveStats
     long iterations = 0;                //!< CG iterations, all solves
     int max_iterations = 0;             //!< most iterations of one solve
     double max_relative_residual = 0.0; //!< worst |r| / |b| at the end
-    long max_unknowns = 0;              //!< most unknown nodes of one solve
-    long picard_iterations = 0;         //!< linear solves, all steps
-    int max_picard_iterations = 0;      //!< most linear solves of one step
-    long picard_unconverged = 0;        //!< steps that ended above it
-    long picard_halvings = 0;           //!< line-search halvings, all steps
+    long max_unknowns = 0;              //!< most unknown cells of one solve
+    long newton_iterations = 0;         //!< linear solves, all steps
+    int max_newton_iterations = 0;      //!< most linear solves of one step
+    long newton_unconverged = 0;        //!< steps that ended above it
+    long newton_halvings = 0;           //!< line-search halvings, all steps
     //! Worst water residual |R| / |b| a step ended with.
-    double max_picard_residual = 0.0;
+    double max_newton_residual = 0.0;
     //! Water the steps' final residuals left unbalanced, sum of |R_I| dt
     //! over the unknowns and steps, m^3 per m of thickness.
     double unbalanced_water = 0.0;
@@ -45,8 +45,8 @@ struct PressureSolveSettings
 {
     double cg_tolerance;     //!< CG: |r| <= this |b|
     int cg_max_iterations;   //!< CG iterations of one linear solve
-    double picard_tolerance; //!< Picard: |R| <= this |b|
-    static constexpr int max_picard_iterations = 50;
+    double newton_tolerance; //!< Newton: |R| <= this |b|
+    static constexpr int max_newton_iterations = 50;
     //! Loosest stopping ratio of a linear solve after the first (the
     //! inexact Newton forcing term's cap).
     static constexpr double max_forcing = 0.1;
@@ -64,51 +64,52 @@ inline PressureSolveSettings pressureSolveSettings( const SolverConfig& s )
 /*!
   \brief The pressure correction of the semi-implicit two-phase step
   (docs/formulation.md §9): after step 2 (the predictor, with p_w at the
-  start of the step), the nodal pressure increment dp that makes the
-  corrected flow satisfy Eq. 8 at the new time,
-    (sum_p N_I C_p V_p / dt) dp_I + dt sum_J (sum_p V_p M_p grad N_I .
-      grad N_J) dp_J = sum_p N_I V_p (source_p - r*_p),
-  solved by Jacobi-preconditioned conjugate gradients (every operation a
-  Kokkos kernel), then the nodal velocities corrected by dp's forces. The
-  points take dp_p = sum_I N_I dp_I in the step's point loop
+  start of the step), the pressure increment dp_c of each cell's free
+  points that makes the corrected flow satisfy Eq. 8 over the cell at the
+  new time,
+    sum_p V_p dtheta_p(dp_c) / dt + (K dp)_c = sum_p V_p (source_p - r*_p),
+  K = G^T mu G (+ the checkerboard penalty) the water the corrected
+  velocities carry out of the cell, solved by Newton with
+  Jacobi-preconditioned conjugate gradients (every operation a Kokkos
+  kernel), then the nodal velocities corrected by dp's forces. The points
+  take their cell's dp_c in the step's point loop
   (PorePressurePointUpdate, `projected`).
 */
 template <class ExecSpace>
 class PressureProjection
 {
   public:
-    using node_view = Kokkos::View<double**, DeviceType<ExecSpace>>;
+    using cell_view = Kokkos::View<double**, DeviceType<ExecSpace>>;
 
     PressureProjection() = default;
-    PressureProjection( const physics::GridGeometry& grid,
-                        const int num_points )
-        : _terms( grid, num_points )
-        , _stencil_sums( grid )
-        , _system( grid.nx, grid.ny, grid.numNodes() )
-        , _work( grid.nx, grid.ny )
-        , _b_i( "pressure_b_i", grid.nx + 1, grid.ny + 1 )
+    explicit PressureProjection( const physics::GridGeometry& grid )
+        : _terms( grid )
+        , _mu_i( "pressure_mu_i", grid.nx + 1, grid.ny + 1 )
+        , _system( grid.nx - 1, grid.ny - 1, grid.nx * grid.ny )
+        , _work( grid.nx - 1, grid.ny - 1 )
         , _forces( "pressure_forces", grid.numNodes() )
-        , _storage_i( "pressure_storage_i", grid.nx + 1, grid.ny + 1 )
-        , _a_dp_i( "pressure_a_dp_i", grid.nx + 1, grid.ny + 1 )
-        , _residual_i( "pressure_residual_i", grid.nx + 1, grid.ny + 1 )
-        , _e_i( "pressure_e_i", grid.nx + 1, grid.ny + 1 )
-        , _dp_old_i( "pressure_dp_old_i", grid.nx + 1, grid.ny + 1 )
-        , _picard( "pressure_picard", grid.numNodes() )
+        , _newton( "pressure_newton", grid.nx * grid.ny )
+        , _k_diagonal_c( "pressure_k_diagonal_c", grid.nx, grid.ny )
+        , _k_dp_c( "pressure_k_dp_c", grid.nx, grid.ny )
+        , _residual_c( "pressure_residual_c", grid.nx, grid.ny )
+        , _e_c( "pressure_e_c", grid.nx, grid.ny )
+        , _dp_old_c( "pressure_dp_old_c", grid.nx, grid.ny )
     {
     }
 
-    //! The last solve's nodal increments dp_i, Pa (WaterGridViews::dp_w_i).
-    const node_view& increments() const { return _dp_i; }
+    //! The last solve's increments dp_c per cell, Pa
+    //! (WaterGridViews::dp_w_c).
+    const cell_view& increments() const { return _dp_c; }
 
     const PressureSolveStats& stats() const { return _stats; }
 
     /*!
-      \brief Solves the step's pressure increment and corrects the nodal
+      \brief Solves the step's pressure increments and corrects the nodal
       velocities of both phases (gv.v_i, dv_i, wg.v_w_i, dv_w_i). The
-      storage is nonlinear (unsaturated), so the increment is iterated by
-      modified Picard (solvePicard). Throws SimulationError, naming the
-      step (`step`, at simulated time `time` s), if a linear solve stops
-      at its iteration cap above its tolerance.
+      storage is nonlinear (unsaturated), so the increments are iterated by
+      Newton (solveNewton). Throws SimulationError, naming the step
+      (`step`, at simulated time `time` s), if a linear solve stops at its
+      iteration cap above its tolerance.
     */
     template <class Source>
     void correct(
@@ -121,27 +122,31 @@ class PressureProjection
         const PressureSolveSettings& settings, const long step,
         const double time )
     {
-        _dp_i = wg.dp_w_i;
-        pressurePointTerms( exec, pv, wv, gv, wg, materials, water,
-                            inertia_scaling, dt, source, _terms );
-        assemblePressureStencil( exec, pv, _terms.mobility_p, _terms.storage_p,
-                                 gv.geometry, dt, _stencil_sums, _system );
-        listPressureUnknowns( exec, gv, wg, _terms, _b_i, _dp_i, _storage_i,
-                              _system );
+        const physics::GridGeometry& grid = gv.geometry;
+        _dp_c = wg.dp_w_c;
+        pressurePointTerms( exec, pv, wv, gv, wg, water, source, _terms );
+        takePressureCellTerms( exec, grid, _terms );
+        pressureNodeMobility( exec, gv, wg, _terms, dt, water.density,
+                              water.viscosity, inertia_scaling, inflow_flux_i,
+                              _mu_i );
+        assemblePressureOperator( exec, grid, _terms, _mu_i, _system );
+        keepStartOnUnknowns( exec, grid );
+        Kokkos::deep_copy(
+            exec, _k_diagonal_c,
+            Kokkos::subview( _system.a, Kokkos::ALL, Kokkos::ALL, 4 ) );
+        _last = CgReport{ 0, 0.0, 0.0, 0.0, true };
         if ( _system.num_nodes > 0 )
         {
-            const double residual = solvePicard(
-                exec, pv, wv, gv, materials, water, saturated, dt, settings );
-            if ( residual > settings.picard_tolerance )
-                ++_stats.picard_unconverged;
+            const double residual = solveNewton(
+                exec, pv, wv, materials, water, saturated, grid, dt, settings );
+            if ( residual > settings.newton_tolerance )
+                ++_stats.newton_unconverged;
             _stats.unbalanced_water +=
-                dt * Impl::absSumOverNodes( exec, _system, _residual_i );
-            _stats.max_picard_residual =
-                std::max( _stats.max_picard_residual, residual );
+                dt * Impl::absSumOverNodes( exec, _system, _residual_c );
+            _stats.max_newton_residual =
+                std::max( _stats.max_newton_residual, residual );
         }
-        else
-            _last = CgReport{ 0, 0.0, 0.0, 0.0, true };
-        scatterPressureForces( exec, pv, wv, gv.geometry, _dp_i, _forces );
+        scatterPressureForces( exec, pv, wv, grid, _dp_c, _forces );
         correctNodalVelocities( exec, gv, wg, _forces, dt, water.density,
                                 water.viscosity, inertia_scaling,
                                 inflow_flux_i );
@@ -162,44 +167,66 @@ class PressureProjection
     }
 
   private:
+    //! dp_c = 0 off this step's unknowns (the solve's start on them: the
+    //! last step's increment).
+    void keepStartOnUnknowns( const ExecSpace& exec,
+                              const physics::GridGeometry& grid )
+    {
+        const auto free_points = unmanaged( _terms.free_c );
+        const auto storage = unmanaged( _terms.storage_c );
+        const auto dp = unmanaged( _dp_c );
+        Kokkos::parallel_for(
+            "mpm::pressure_start",
+            Kokkos::MDRangePolicy<ExecSpace, Kokkos::Rank<2>>(
+                exec, { 0, 0 }, { grid.nx, grid.ny } ),
+            KOKKOS_LAMBDA( const int i, const int j ) {
+                if ( !isPressureUnknown( free_points, storage, i, j ) )
+                    dp( i, j ) = 0.0;
+            } );
+    }
+
     /*!
-      \brief Modified Picard (docs/formulation.md §9, item 4): from dp = 0,
-      solves A e = R and moves dp along e, with R the residual of Eq. 8 at
-      the iterate (waterResidual: the stored water evaluated exactly, so
-      the converged increment conserves water) and A's storage at the
-      iterate, until |R| <= picard_tolerance |b|. It starts from the last
-      step's increment if its residual is below |b|, else from dp = 0. A step
-      that does not reduce |R| is halved (up to 6 times): from a saturated
-      point, whose storage is only n S / K_w, the first solve overshoots
-      far into suction.
+      \brief Newton's method on the cells' water (docs/formulation.md §9,
+      item 4): solves A e = R and moves dp along e, with R the residual of
+      Eq. 8 at the iterate (waterResidual: the stored water evaluated
+      exactly, so the converged increment conserves water) and A = K +
+      the tangent storage at the iterate (each cell's storage depends on
+      its own dp only: A is the exact Jacobian), until |R| <=
+      newton_tolerance |b|. It starts from the last step's increments if
+      their residual is below |b|, else from dp = 0. A step that does not
+      reduce |R| is halved (up to 6 times): a cell whose points are far in
+      suction stores little per pascal, and the first solve overshoots.
     */
-    double solvePicard( const ExecSpace& exec,
+    double solveNewton( const ExecSpace& exec,
                         const ParticleViews<ExecSpace>& pv,
                         const WaterParticleViews<ExecSpace>& wv,
-                        GridViews<ExecSpace>& gv,
                         const physics::MaterialTable& materials,
                         const physics::WaterParams& water, const bool saturated,
-                        const double dt, const PressureSolveSettings& settings )
+                        const physics::GridGeometry& grid, const double dt,
+                        const PressureSolveSettings& settings )
     {
-        const double b_norm =
-            std::sqrt( Impl::dotOverNodes( exec, _system, _b_i, _b_i ) );
-        double residual_norm =
-            waterResidual( exec, pv, wv, gv, materials, water, saturated, dt );
+        const auto residualAt = [&]()
+        {
+            return waterResidual( exec, pv, wv, materials, water, saturated,
+                                  grid, dt );
+        };
+        const double b_norm = std::sqrt(
+            Impl::dotOverNodes( exec, _system, _terms.b_c, _terms.b_c ) );
+        double residual_norm = residualAt();
         if ( !( residual_norm < b_norm ) )
         {
-            Kokkos::deep_copy( exec, _dp_i, 0.0 );
-            Kokkos::deep_copy( exec, _residual_i, _b_i );
-            residual_norm = b_norm;
+            Kokkos::deep_copy( exec, _dp_c, 0.0 );
+            residual_norm = residualAt();
         }
-        int picard = 0;
-        const double target = settings.picard_tolerance * b_norm;
+        int newton = 0;
+        const double target = settings.newton_tolerance * b_norm;
         // The linear solve's stopping ratio beyond the first (inexact
         // Newton, Eisenstat & Walker 1996, choice 1): how far the last
         // linear model missed the new water residual, ||R| - |r_lin|| /
         // |R_old|.
         double forcing = 0.0;
         while ( residual_norm > target &&
-                picard < PressureSolveSettings::max_picard_iterations )
+                newton < PressureSolveSettings::max_newton_iterations )
         {
             // Solve only as far as the water residual needs: a linear step
             // solved to 0.5 target / |R| would meet the target at once; no
@@ -207,10 +234,10 @@ class PressureProjection
             const double cg_tolerance = std::max(
                 { settings.cg_tolerance, 0.5 * target / residual_norm,
                   std::min( forcing, PressureSolveSettings::max_forcing ) } );
-            Kokkos::deep_copy( exec, _e_i, 0.0 );
-            _last = solveJacobiCg( exec, _system, _residual_i, _e_i, _work,
+            Kokkos::deep_copy( exec, _e_c, 0.0 );
+            _last = solveJacobiCg( exec, _system, _residual_c, _e_c, _work,
                                    cg_tolerance, settings.cg_max_iterations );
-            ++picard;
+            ++newton;
             _stats.iterations += _last.iterations;
             _stats.max_iterations =
                 std::max( _stats.max_iterations, _last.iterations );
@@ -220,13 +247,12 @@ class PressureProjection
                               _last.residual_norm / _last.rhs_norm );
             if ( !_last.converged )
                 return 0.0; // correct() stops the run with a diagnosis
-            Kokkos::deep_copy( exec, _dp_old_i, _dp_i );
+            Kokkos::deep_copy( exec, _dp_old_c, _dp_c );
             double step = 1.0;
             for ( int halving = 0;; ++halving, step *= 0.5 )
             {
-                stepOverUnknowns( exec, _system, _dp_old_i, step, _e_i, _dp_i );
-                const double norm = waterResidual( exec, pv, wv, gv, materials,
-                                                   water, saturated, dt );
+                stepOverUnknowns( exec, _system, _dp_old_c, step, _e_c, _dp_c );
+                const double norm = residualAt();
                 if ( norm < residual_norm || halving == 6 )
                 {
                     forcing = halving == 0
@@ -234,44 +260,44 @@ class PressureProjection
                                         residual_norm
                                   : PressureSolveSettings::max_forcing;
                     residual_norm = norm;
-                    _stats.picard_halvings += halving;
+                    _stats.newton_halvings += halving;
                     break;
                 }
             }
         }
-        _stats.picard_iterations += picard;
-        _stats.max_picard_iterations =
-            std::max( _stats.max_picard_iterations, picard );
+        _stats.newton_iterations += newton;
+        _stats.max_newton_iterations =
+            std::max( _stats.max_newton_iterations, newton );
         return b_norm > 0.0 ? residual_norm / b_norm : 0.0;
     }
 
-    //! The residual R of Eq. 8 at the iterate dp (into _residual_i, A's
-    //! storage moved to the iterate) and its norm.
+    //! The residual R of Eq. 8 at the iterate dp (into _residual_c, A's
+    //! diagonal moved to K's plus the tangent storage there) and its norm.
     double waterResidual( const ExecSpace& exec,
                           const ParticleViews<ExecSpace>& pv,
                           const WaterParticleViews<ExecSpace>& wv,
-                          GridViews<ExecSpace>& gv,
                           const physics::MaterialTable& materials,
                           const physics::WaterParams& water,
-                          const bool saturated, const double dt )
+                          const bool saturated,
+                          const physics::GridGeometry& grid, const double dt )
     {
-        picardStorageSums( exec, pv, wv, materials, water, saturated,
-                           gv.geometry, _dp_i, dt, _picard );
-        Impl::applyStencil( exec, _system, _dp_i, _a_dp_i );
-        picardResidual( exec, gv, _terms.unknown_i, _picard, _b_i, _dp_i,
-                        _a_dp_i, _storage_i, _residual_i, _system );
+        newtonStorageSums( exec, pv, wv, materials, water, saturated, grid,
+                           _terms, _dp_c, dt, _newton );
+        restoreFlowDiagonal( exec, _k_diagonal_c, _system );
+        Impl::applyStencil( exec, _system, _dp_c, _k_dp_c );
+        newtonResidual( exec, _newton, _terms.b_c, _k_diagonal_c, _k_dp_c,
+                        _residual_c, _system );
         return std::sqrt(
-            Impl::dotOverNodes( exec, _system, _residual_i, _residual_i ) );
+            Impl::dotOverNodes( exec, _system, _residual_c, _residual_c ) );
     }
 
     PressurePointTerms<ExecSpace> _terms;
-    PressureStencilSums<ExecSpace> _stencil_sums;
+    Kokkos::View<double** [2], DeviceType<ExecSpace>> _mu_i;
     NodeStencilSystem<ExecSpace> _system;
     CgWorkspace<ExecSpace> _work;
-    node_view _b_i, _dp_i;
     PressureForceSums<ExecSpace> _forces;
-    node_view _storage_i, _a_dp_i, _residual_i, _e_i, _dp_old_i;
-    PicardSums<ExecSpace> _picard;
+    NewtonSums<ExecSpace> _newton;
+    cell_view _dp_c, _k_diagonal_c, _k_dp_c, _residual_c, _e_c, _dp_old_c;
     CgReport _last;
     PressureSolveStats _stats;
 };

@@ -405,8 +405,9 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
         { "final_max_wave_speed_m_per_s", limit.max_wave_speed } };
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
         metrics["pressure_solve"] = {
-            { "method", "Jacobi-preconditioned conjugate gradients on the "
-                        "nodal pressure increment" },
+            { "method", "Newton on each cell's pressure increment, each "
+                        "linear solve by Jacobi-preconditioned conjugate "
+                        "gradients (picard_*: the Newton iteration)" },
             { "tolerance", config.solver.pressure_tolerance },
             { "max_iterations_allowed",
               static_cast<int>( config.solver.pressure_max_iterations ) },
@@ -420,15 +421,15 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
             { "max_unknowns", solves->max_unknowns },
             { "worst_relative_residual", solves->max_relative_residual },
             { "picard_tolerance", config.solver.pressure_picard_tolerance },
-            { "picard_solves_total", solves->picard_iterations },
+            { "picard_solves_total", solves->newton_iterations },
             { "picard_solves_mean", solves->solves > 0
-                                        ? double( solves->picard_iterations ) /
+                                        ? double( solves->newton_iterations ) /
                                               double( solves->solves )
                                         : 0.0 },
-            { "picard_solves_max", solves->max_picard_iterations },
-            { "picard_halvings_total", solves->picard_halvings },
-            { "picard_unconverged_steps", solves->picard_unconverged },
-            { "picard_worst_water_residual", solves->max_picard_residual },
+            { "picard_solves_max", solves->max_newton_iterations },
+            { "picard_halvings_total", solves->newton_halvings },
+            { "picard_unconverged_steps", solves->newton_unconverged },
+            { "picard_worst_water_residual", solves->max_newton_residual },
             { "picard_unbalanced_water_m3_per_m", solves->unbalanced_water } };
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )

@@ -108,8 +108,7 @@ class Simulation
                 _cell_lists = CellPointLists<ExecSpace>(
                     points.size(), grid.geometry.nx * grid.geometry.ny );
             if ( semiImplicit() )
-                _projection = PressureProjection<ExecSpace>( grid.geometry,
-                                                             points.size() );
+                _projection = PressureProjection<ExecSpace>( grid.geometry );
         }
         else
             _dry_step = DryStepPhases<ExecSpace>( grid.geometry );
@@ -384,7 +383,7 @@ class Simulation
             _dry_step.updateGrid( exec, grid, dt, settings.damping,
                                   solver.inertia_scaling );
 
-        // 2b. Semi-implicit: the nodal pressure increment of Eq. 8 at the
+        // 2b. Semi-implicit: each cell's pressure increment of Eq. 8 at the
         // new time and the velocities it corrects (§9; the points take it
         // in step 6).
         [[maybe_unused]] auto pore_pressure = porePressurePointUpdate(
@@ -475,7 +474,7 @@ class Simulation
             dt, source, conditions.inflow_flux_i,
             pressureSolveSettings( solver ), step + 1, time );
         pore_pressure.projected = true;
-        pore_pressure.dp_i = _projection.increments();
+        pore_pressure.dp_c = _projection.increments();
         pore_pressure.x_p = particles.x_p;
         pore_pressure.grid = grid.geometry;
     }

@@ -1,0 +1,179 @@
+#ifndef MPM_PRESSURE_NEWTON_HPP
+#define MPM_PRESSURE_NEWTON_HPP
+
+#include <mpm_grid_scatter.hpp>
+#include <mpm_particle_views.hpp>
+#include <mpm_pore_pressure.hpp>
+#include <mpm_pressure_terms.hpp>
+#include <mpm_stencil_cg.hpp>
+#include <mpm_water_views.hpp>
+#include <physics/mpm_grid_geometry.hpp>
+#include <physics/mpm_material_params.hpp>
+#include <physics/mpm_retention.hpp>
+#include <physics/mpm_water_storage.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace mpm
+{
+//! Fields of the Newton iteration's point sums in a cell.
+struct NewtonCellField
+{
+    enum : int
+    {
+        stored,  //!< water the free points store, sum V dtheta / dt, m^3/s
+        tangent, //!< their storage at the iterate, sum V C / dt, m^3/(Pa s)
+        count
+    };
+};
+
+template <class ExecSpace>
+using NewtonSums = GridScatter<ExecSpace, NewtonCellField::count>;
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The storage of each cell's free points at its iterate dp_c
+  (docs/formulation.md §9, item 4): the exact change of Eq. 8's stored
+  water from p_w to p_w + dp_c, dtheta = n (S(p_w + dp_c) - S(p_w)) +
+  n S dp_c / K_w (physics::storedWaterChange, as the explicit step's
+  PorePressureNewton; saturated: n S dp_c / K_w), and the tangent C =
+  n dS/dp_w + n S / K_w at p_w + dp_c, summed as V (...) / dt. Each
+  point takes only its own cell's dp_c, so the tangent is the exact
+  derivative of the stored water (Newton's). Only the unknown cells'
+  points add (isPressureUnknown).
+*/
+template <class ExecSpace, class CellView>
+void newtonStorageSums( const ExecSpace& exec,
+                        const ParticleViews<ExecSpace>& pv,
+                        const WaterParticleViews<ExecSpace>& wv,
+                        const physics::MaterialTable& materials,
+                        const physics::WaterParams& water, const bool saturated,
+                        const physics::GridGeometry& grid,
+                        const PressurePointTerms<ExecSpace>& t,
+                        const CellView& dp_c, const double dt,
+                        const NewtonSums<ExecSpace>& sums )
+{
+    using F = NewtonCellField;
+    const auto handle = sums.handle();
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
+    const auto dp = unmanaged( dp_c );
+    const auto free_points = unmanaged( t.free_c );
+    const auto storage = unmanaged( t.storage_c );
+    const double K_w = water.bulk_modulus;
+    Kokkos::parallel_for(
+        "mpm::pressure_newton_storage",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, pv.size() ),
+        KOKKOS_LAMBDA( const int p ) {
+            int ci, cj;
+            if ( points.status_p( p ) != point_active ||
+                 water_points.p_w_condition_p( p ) >= 0 ||
+                 !grid.cellOf( points.x_p( p, 0 ), points.x_p( p, 1 ), ci,
+                               cj ) ||
+                 !isPressureUnknown( free_points, storage, ci, cj ) )
+                return;
+            const double dp_p = dp( ci, cj );
+            const double n = water_points.n_p( p );
+            const double S = water_points.S_p( p );
+            const double dS_dp = water_points.dS_dp_p( p );
+            const double p_w = water_points.p_w_p( p );
+            const physics::RetentionParams& retention =
+                materials[points.material_p( p )].retention;
+            double tangent = physics::waterStorage( n, S, dS_dp, K_w );
+            double stored = tangent * dp_p;
+            // Saturated at both ends (S = s_sat, dS/dp_w = 0 at p_w and
+            // p_w + dp_p >= 0): the storage n S / K_w is linear.
+            const bool stays_saturated = p_w >= 0.0 && p_w + dp_p >= 0.0 &&
+                                         S == retention.s_sat && dS_dp == 0.0;
+            if ( !saturated && dp_p != 0.0 && !stays_saturated )
+            {
+                const physics::SaturationState state =
+                    RetentionAt{ retention }( p_w + dp_p );
+                stored = physics::storedWaterChange( n, S, state.S, dp_p, K_w );
+                tangent = physics::waterStorage( n, state.S, state.dS_dp, K_w );
+            }
+            const double scale = points.vol_p( p ) / dt;
+            auto access = handle.access();
+            const int cell = ci * grid.ny + cj;
+            access.add( cell, F::stored, scale * stored );
+            access.add( cell, F::tangent, scale * tangent );
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The water residual at the unknown cells of s,
+    R_c = b_c - sum_p V dtheta_p / dt - (K dp)_c,
+  with `k_dp` = K dp (the flow part alone: A's diagonal holds k_diagonal
+  when it was applied); then puts the tangent storage at the iterate on
+  A's diagonal. Takes the sums of the unknowns (newtonStorageSums: only
+  the unknowns' points contribute, every other cell's dp is 0).
+*/
+template <class ExecSpace, class CellView>
+void newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
+                     const CellView& b_c, const CellView& k_diagonal_c,
+                     const CellView& k_dp_c, const CellView& residual_c,
+                     NodeStencilSystem<ExecSpace>& s )
+{
+    using F = NewtonCellField;
+    const auto handle = sums.handle();
+    const auto cells = unmanaged( s.nodes );
+    const auto b = unmanaged( b_c );
+    const auto k_diagonal = unmanaged( k_diagonal_c );
+    const auto k_dp = unmanaged( k_dp_c );
+    const auto residual = unmanaged( residual_c );
+    const auto a = unmanaged( s.a );
+    const int ny = static_cast<int>( b_c.extent( 1 ) );
+    Kokkos::parallel_for(
+        "mpm::pressure_newton_residual",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m ) {
+            const int c = cells( m ), i = c / ny, j = c % ny;
+            residual( i, j ) =
+                b( i, j ) - handle.take( c, F::stored ) - k_dp( i, j );
+            a( i, j, 4 ) = k_diagonal( i, j ) + handle.take( c, F::tangent );
+        } );
+}
+
+//! A's diagonal set to K's alone (k_diagonal) on the unknowns of s.
+template <class ExecSpace, class CellView>
+void restoreFlowDiagonal( const ExecSpace& exec, const CellView& k_diagonal_c,
+                          NodeStencilSystem<ExecSpace>& s )
+{
+    const auto cells = unmanaged( s.nodes );
+    const auto k_diagonal = unmanaged( k_diagonal_c );
+    const auto a = unmanaged( s.a );
+    const int ny = static_cast<int>( k_diagonal_c.extent( 1 ) );
+    Kokkos::parallel_for(
+        "mpm::pressure_flow_diagonal",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m ) {
+            const int i = cells( m ) / ny, j = cells( m ) % ny;
+            a( i, j, 4 ) = k_diagonal( i, j );
+        } );
+}
+
+//! dp = base + step e on the unknowns of s.
+template <class ExecSpace, class CellView>
+void stepOverUnknowns( const ExecSpace& exec,
+                       const NodeStencilSystem<ExecSpace>& s,
+                       const CellView& base_c, const double step,
+                       const CellView& e_c, const CellView& dp_c )
+{
+    const auto cells = unmanaged( s.nodes );
+    const auto base = unmanaged( base_c );
+    const auto e = unmanaged( e_c );
+    const auto dp = unmanaged( dp_c );
+    const int ny = static_cast<int>( dp_c.extent( 1 ) );
+    Kokkos::parallel_for(
+        "mpm::pressure_newton_step",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m ) {
+            const int i = cells( m ) / ny, j = cells( m ) % ny;
+            dp( i, j ) = base( i, j ) + step * e( i, j );
+        } );
+}
+
+} // namespace mpm
+
+#endif // MPM_PRESSURE_NEWTON_HPP
