@@ -343,7 +343,8 @@ struct SolverConfig
     //! Fixed time step; 0 selects the automatic (CFL) step.
     double dt_s = 0.0;
     //! FLIP fraction of the FLIP/PIC blend (1 = pure FLIP, 0 = pure PIC) at
-    //! a step of the CFL limit; smaller steps blend proportionally less PIC
+    //! a step of the explicit scheme's CFL limit; smaller steps blend
+    //! proportionally less PIC, the semi-implicit scheme's longer ones more
     //! (Simulation::stepFlipFraction).
     double flip_fraction = 0.99;
     //! Two-phase: the water takes the solid's FLIP/PIC update plus its

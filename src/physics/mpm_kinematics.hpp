@@ -3,6 +3,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cmath>
+
 namespace mpm
 {
 namespace physics
@@ -51,18 +53,23 @@ struct Kinematics
 
 /*!
   \brief FLIP fraction of a step of size dt: `flip_fraction` at a step of
-  the CFL limit `dt_limit`, and proportionally less PIC at smaller steps,
-  1 - (1 - flip) min(1, dt / limit). The PIC part damps every step (the
+  the reference `dt_reference` (the explicit scheme's CFL limit), and
+  proportionally less PIC at smaller steps, 1 - (1 - flip) dt / reference;
+  at longer steps (the semi-implicit scheme's) flip^(dt / reference), as
+  that many reference steps would blend. The PIC part damps every step (the
   water's flow relative to the solid too), so a fixed blend would damp
   more per second the smaller the step: a wetting column took up 25 %
   less water at a twentieth of the step. Scaled, the damping per second
-  does not depend on the step.
+  depends on neither the step nor the scheme.
 */
 inline double stepFlipFraction( const double flip_fraction, const double dt,
-                                const double dt_limit )
+                                const double dt_reference )
 {
-    const double ratio = dt_limit > 0.0 && dt < dt_limit ? dt / dt_limit : 1.0;
-    return 1.0 - ( 1.0 - flip_fraction ) * ratio;
+    if ( !( dt_reference > 0.0 ) )
+        return flip_fraction;
+    const double ratio = dt / dt_reference;
+    return ratio <= 1.0 ? 1.0 - ( 1.0 - flip_fraction ) * ratio
+                        : std::pow( flip_fraction, ratio );
 }
 
 } // namespace physics

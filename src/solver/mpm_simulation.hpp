@@ -314,7 +314,26 @@ class Simulation
     double stepFlipFraction( const double dt ) const
     {
         return physics::stepFlipFraction( solver.flip_fraction, dt,
-                                          waveSpeedLimit().dt_limit );
+                                          dampingReferenceStep() );
+    }
+
+    /*!
+      \brief The step at which the FLIP/PIC blend is `flip_fraction`: the
+      explicit scheme's CFL limit (Courant number 1), in both schemes, so
+      the PIC damping per second is the same whichever scheme runs. The
+      semi-implicit step is about 20 times longer on the slope; with its own
+      (skeleton) limit as reference it damped 20 times less per second, and
+      a softened face without tensile strength that the explicit run holds
+      slid off in the first seconds of rain (docs/formulation.md §9).
+    */
+    double dampingReferenceStep() const
+    {
+        if ( !semiImplicit() )
+            return waveSpeedLimit().dt_limit;
+        const WaveSpeedLimit undrained =
+            criticalTimeStepTwoPhase( ExecSpace(), particles, water_particles,
+                                      materials, water, grid.geometry.h );
+        return undrained.dt_limit * std::sqrt( solver.inertia_scaling );
     }
 
     //! B-bar: the cell averages of the step's velocity gradients.

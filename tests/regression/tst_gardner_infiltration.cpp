@@ -248,7 +248,7 @@ TYPED_TEST( GardnerInfiltration, conductivity_matches_exact_solution )
 
 // The semi-implicit scheme (docs/formulation.md §9): the rain crosses the
 // top edge as a tied flux, the front is resolved by the cells' pressure
-// solve. Achieved: 0.0040 at 20 cells, 0.0032 at 40 (the explicit scheme
+// solve. Achieved: 0.0044 at 20 cells, 0.0032 at 40 (the explicit scheme
 // 0.0045 and 0.0032).
 TYPED_TEST( GardnerInfiltration, semi_implicit_conductivity_matches_exact )
 {

@@ -166,7 +166,7 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
 }
 
 // The semi-implicit scheme, every cell below the loaded one. Achieved:
-// 7.6e-4 (p_w), 6.1e-3 (sigma_yy), both in the cell just below it. With
+// 8.2e-4 (p_w), 6.5e-3 (sigma_yy), both in the cell just below it. With
 // one pressure unknown per node (until session 25) the approximate
 // projection put the three cells below the load 0.2 %, 1.2 %, 5 % off in
 // p_w and 1.6 %, 8 %, 35 % in sigma'_yy (docs/formulation.md §9).
