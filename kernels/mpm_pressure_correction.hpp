@@ -3,12 +3,12 @@
 
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
+#include <mpm_node_force_response.hpp>
 #include <mpm_node_loop.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_point_stencil.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>
-#include <physics/mpm_nodal_water.hpp>
 #include <physics/mpm_two_phase.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -108,23 +108,14 @@ void correctNodalVelocities(
                 f_w[d] = sums.take( n, F::f_w_x + d );
                 f_m[d] = sums.take( n, F::f_m_x + d );
             }
-            const double m_s = nodes.m_i( i, j );
-            if ( !( m_s > 0.0 ) )
+            if ( !( nodes.m_i( i, j ) > 0.0 ) )
                 return;
-            const double m_w = water_nodes.m_w_i( i, j );
-            const physics::NodalWater water = physics::nodalWater(
-                m_w, water_nodes.vol_i( i, j ), water_nodes.q_i( i, j ),
-                water_density, water_viscosity );
-            const int flags = nodes.flags_i( i, j );
-            const int flags_w = water_nodes.flags_w_i( i, j );
+            const NodeForceResponse node =
+                nodeForceResponse( nodes, water_nodes, flux_i, i, j, update,
+                                   water_density, water_viscosity );
             for ( int d = 0; d < 2; ++d )
             {
-                const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r =
-                    update( m_s, m_w, 0.0, 0.0, f_m[d], water.nS * f_w[d],
-                            water.drag, flags & bit,
-                            water.locked || ( flags_w & bit ) ||
-                                flux_i( i, j, d ) != 0.0 );
+                const auto r = node.along( d, f_m[d], node.water.nS * f_w[d] );
                 nodes.v_i( i, j, d ) += r.v_s;
                 nodes.dv_i( i, j, d ) += r.v_s;
                 water_nodes.v_w_i( i, j, d ) += r.v_w;

@@ -30,6 +30,21 @@ struct NewtonCellField
 template <class ExecSpace>
 using NewtonSums = GridScatter<ExecSpace, NewtonCellField::count>;
 
+//! f(c, i, j) for each unknown cell of s: its flat index c = i ny + j.
+template <class ExecSpace, class Functor>
+void forEachUnknownCell( const char* label, const ExecSpace& exec,
+                         const NodeStencilSystem<ExecSpace>& s, const int ny,
+                         const Functor& f )
+{
+    const auto cells = unmanaged( s.nodes );
+    Kokkos::parallel_for(
+        label, Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m ) {
+            const int c = cells( m );
+            f( c, c / ny, c % ny );
+        } );
+}
+
 //---------------------------------------------------------------------------//
 /*!
   \brief The storage of each cell's free points at its iterate dp_c
@@ -117,18 +132,15 @@ void newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
 {
     using F = NewtonCellField;
     const auto handle = sums.handle();
-    const auto cells = unmanaged( s.nodes );
     const auto b = unmanaged( b_c );
     const auto k_diagonal = unmanaged( k_diagonal_c );
     const auto k_dp = unmanaged( k_dp_c );
     const auto residual = unmanaged( residual_c );
     const auto a = unmanaged( s.a );
-    const int ny = static_cast<int>( b_c.extent( 1 ) );
-    Kokkos::parallel_for(
-        "mpm::pressure_newton_residual",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m ) {
-            const int c = cells( m ), i = c / ny, j = c % ny;
+    forEachUnknownCell(
+        "mpm::pressure_newton_residual", exec, s,
+        static_cast<int>( b_c.extent( 1 ) ),
+        KOKKOS_LAMBDA( const int c, const int i, const int j ) {
             residual( i, j ) =
                 b( i, j ) - handle.take( c, F::stored ) - k_dp( i, j );
             a( i, j, 4 ) = k_diagonal( i, j ) + handle.take( c, F::tangent );
@@ -140,15 +152,12 @@ template <class ExecSpace, class CellView>
 void restoreFlowDiagonal( const ExecSpace& exec, const CellView& k_diagonal_c,
                           NodeStencilSystem<ExecSpace>& s )
 {
-    const auto cells = unmanaged( s.nodes );
     const auto k_diagonal = unmanaged( k_diagonal_c );
     const auto a = unmanaged( s.a );
-    const int ny = static_cast<int>( k_diagonal_c.extent( 1 ) );
-    Kokkos::parallel_for(
-        "mpm::pressure_flow_diagonal",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m ) {
-            const int i = cells( m ) / ny, j = cells( m ) % ny;
+    forEachUnknownCell(
+        "mpm::pressure_flow_diagonal", exec, s,
+        static_cast<int>( k_diagonal_c.extent( 1 ) ),
+        KOKKOS_LAMBDA( const int, const int i, const int j ) {
             a( i, j, 4 ) = k_diagonal( i, j );
         } );
 }
@@ -160,16 +169,13 @@ void stepOverUnknowns( const ExecSpace& exec,
                        const CellView& base_c, const double step,
                        const CellView& e_c, const CellView& dp_c )
 {
-    const auto cells = unmanaged( s.nodes );
     const auto base = unmanaged( base_c );
     const auto e = unmanaged( e_c );
     const auto dp = unmanaged( dp_c );
-    const int ny = static_cast<int>( dp_c.extent( 1 ) );
-    Kokkos::parallel_for(
-        "mpm::pressure_newton_step",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m ) {
-            const int i = cells( m ) / ny, j = cells( m ) % ny;
+    forEachUnknownCell(
+        "mpm::pressure_newton_step", exec, s,
+        static_cast<int>( dp_c.extent( 1 ) ),
+        KOKKOS_LAMBDA( const int, const int i, const int j ) {
             dp( i, j ) = base( i, j ) + step * e( i, j );
         } );
 }

@@ -2,12 +2,12 @@
 #define MPM_PRESSURE_OPERATOR_HPP
 
 #include <mpm_grid_views.hpp>
+#include <mpm_node_force_response.hpp>
 #include <mpm_node_loop.hpp>
 #include <mpm_pressure_terms.hpp>
 #include <mpm_stencil_cg.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>
-#include <physics/mpm_nodal_water.hpp>
 #include <physics/mpm_two_phase.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -47,24 +47,17 @@ void pressureNodeMobility(
             const double volume = sums.take( n, N::volume );
             const double saturation = sums.take( n, N::saturation );
             mu( i, j, 0 ) = mu( i, j, 1 ) = 0.0;
-            const double m_s = nodes.m_i( i, j );
-            if ( !( m_s > 0.0 ) || !( volume > 0.0 ) )
+            if ( !( nodes.m_i( i, j ) > 0.0 ) || !( volume > 0.0 ) )
                 return;
-            const double m_w = water_nodes.m_w_i( i, j );
-            const physics::NodalWater water = physics::nodalWater(
-                m_w, water_nodes.vol_i( i, j ), water_nodes.q_i( i, j ),
-                water_density, water_viscosity );
+            const NodeForceResponse node =
+                nodeForceResponse( nodes, water_nodes, flux_i, i, j, update,
+                                   water_density, water_viscosity );
             const double S = saturation / volume;
-            const int flags = nodes.flags_i( i, j );
-            const int flags_w = water_nodes.flags_w_i( i, j );
+            const double nS = node.water.nS;
             for ( int d = 0; d < 2; ++d )
             {
-                const int bit = d == 0 ? node_fix_x : node_fix_y;
-                const auto r = update( m_s, m_w, 0.0, 0.0, S, water.nS,
-                                       water.drag, flags & bit,
-                                       water.locked || ( flags_w & bit ) ||
-                                           flux_i( i, j, d ) != 0.0 );
-                mu( i, j, d ) = water.nS * r.v_w + ( S - water.nS ) * r.v_s;
+                const auto r = node.along( d, S, nS );
+                mu( i, j, d ) = nS * r.v_w + ( S - nS ) * r.v_s;
             }
         } );
 }
