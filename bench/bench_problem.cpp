@@ -1,14 +1,30 @@
 #include <bench_problem.hpp>
 
+#include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
 
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
+#include <exception>
 #include <map>
+#include <string>
 
 namespace mpm_bench
 {
+//---------------------------------------------------------------------------//
+mpm::CaseConfig projectCase( const std::string& file )
+{
+    try
+    {
+        return mpm::readCaseFile( RAINSLIDE_CASES_DIR "/" + file );
+    }
+    catch ( const std::exception& )
+    {
+        return mpm::CaseConfig();
+    }
+}
+
 //---------------------------------------------------------------------------//
 mpm::CaseConfig soilBlockCase( const int n )
 {

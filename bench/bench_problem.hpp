@@ -35,6 +35,9 @@ constexpr double preload_time_s = 0.03;
 //! The case of the soil block with n cells across its height.
 mpm::CaseConfig soilBlockCase( const int n );
 
+//! A case of cases/ (no stages if the file cannot be read).
+mpm::CaseConfig projectCase( const std::string& file );
+
 //! Runs benchmark b at the block sizes `cells_high` (cells across the
 //! block's height), in microseconds of real time.
 inline void blockSizes( benchmark::internal::Benchmark* b,

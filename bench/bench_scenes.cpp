@@ -5,11 +5,11 @@
 // of runStages (advance and its per-step CFL limit, stability check and
 // kinetic energy). run_slope_*: run_step_* on the paper's slope, 4.7k points
 // on a mostly empty grid, from rest: cases/slope_total_stress.toml (dry) and
-// the rainfall stage of cases/slope_base.toml (unsaturated).
+// the rainfall stage of cases/slope_base.toml (unsaturated; semi_implicit:
+// with solver.scheme = "semi_implicit" at the case's Courant number).
 
 #include <bench_problem.hpp>
 
-#include <io/mpm_case_reader.hpp>
 #include <solver/mpm_run_stages.hpp>
 
 #include <string>
@@ -49,25 +49,12 @@ mpm::CaseConfig sceneCase( const int n, const mpm::AnalysisType analysis )
     return config;
 }
 
-//! A case of cases/ (empty name if the file cannot be read).
-mpm::CaseConfig projectCase( const std::string& file )
-{
-    const std::string cases = RAINSLIDE_CASES_DIR "/";
-    try
-    {
-        return mpm::readCaseFile( cases + file );
-    }
-    catch ( const std::exception& )
-    {
-        return mpm::CaseConfig();
-    }
-}
-
 //! Times one step of `config` per iteration (after 5 untimed ones),
-//! with runStages' per-step calls if `run_step`.
+//! with runStages' per-step calls if `run_step`; steps of `courant` times
+//! the CFL limit.
 template <class ExecSpace>
 void BM_caseSteps( benchmark::State& state, const mpm::CaseConfig& config,
-                   const bool run_step )
+                   const bool run_step, const double courant = 0.5 )
 {
     if ( config.stages.empty() )
     {
@@ -80,7 +67,7 @@ void BM_caseSteps( benchmark::State& state, const mpm::CaseConfig& config,
     sim.applyStage( stage );
     const mpm::StepSettings settings{
         stage.gravity_m_per_s2[0], stage.gravity_m_per_s2[1], stage.damping };
-    const double dt = 0.5 * sim.waveSpeedLimit().dt_limit;
+    const double dt = courant * sim.waveSpeedLimit().dt_limit;
     double kinetic_energy = 0.0;
     const auto step = [&]()
     {
@@ -127,13 +114,22 @@ void BM_sceneStep( benchmark::State& state )
 template <class ExecSpace>
 void BM_runSlopeDry( benchmark::State& state )
 {
-    BM_caseSteps<ExecSpace>( state, projectCase( "slope_total_stress.toml" ),
-                             true );
+    BM_caseSteps<ExecSpace>(
+        state, mpm_bench::projectCase( "slope_total_stress.toml" ), true );
 }
 template <class ExecSpace>
 void BM_runSlopeUnsaturated( benchmark::State& state )
 {
-    BM_caseSteps<ExecSpace>( state, projectCase( "slope_base.toml" ), true );
+    BM_caseSteps<ExecSpace>( state, mpm_bench::projectCase( "slope_base.toml" ),
+                             true );
+}
+template <class ExecSpace>
+void BM_runSlopeSemiImplicit( benchmark::State& state )
+{
+    mpm::CaseConfig config = mpm_bench::projectCase( "slope_base.toml" );
+    config.solver.scheme = mpm::TwoPhaseScheme::SemiImplicit;
+    BM_caseSteps<ExecSpace>( state, config, true,
+                             config.solver.courant_number );
 }
 
 // Names as in bench_kernels.cpp: <scene step>/<backend>/<scatter>/cells_high:n
@@ -173,6 +169,8 @@ bool addScenes( const std::string& tag )
     addBenchmark( "run_slope_dry/" + tag, BM_runSlopeDry<Space>, slopeReport );
     addBenchmark( "run_slope_unsaturated/" + tag, BM_runSlopeUnsaturated<Space>,
                   slopeReport );
+    addBenchmark( "run_slope_semi_implicit/" + tag,
+                  BM_runSlopeSemiImplicit<Space>, slopeReport );
     return true;
 }
 
