@@ -31,7 +31,8 @@ struct SlopeAfterRain
     double dt = 0.0;
     mpm::PressurePointTerms<ExecSpace> terms;
 
-    //! False (and the benchmark skipped) if the case cannot be read.
+    //! Leaves `sim` null (and the benchmark skipped) if the case cannot be
+    //! read.
     explicit SlopeAfterRain( benchmark::State& state )
     {
         mpm::CaseConfig config = mpm_bench::projectCase( "slope_base.toml" );
@@ -42,14 +43,11 @@ struct SlopeAfterRain
         }
         config.solver.scheme = mpm::TwoPhaseScheme::SemiImplicit;
         sim = std::make_unique<mpm::Simulation<ExecSpace>>( config );
-        const mpm::StageConfig& stage = config.stages.back();
-        sim->applyStage( stage );
-        const mpm::StepSettings settings{ stage.gravity_m_per_s2[0],
-                                          stage.gravity_m_per_s2[1],
-                                          stage.damping };
-        dt = config.solver.courant_number * sim->waveSpeedLimit().dt_limit;
+        const mpm_bench::StageStep step = mpm_bench::applyLastStage(
+            *sim, config, config.solver.courant_number );
+        dt = step.dt;
         for ( int k = 0; k < 5; ++k )
-            sim->advance( dt, settings );
+            sim->advance( dt, step.settings );
         terms = mpm::PressurePointTerms<ExecSpace>( sim->grid.geometry );
         takePointTerms();
         ExecSpace().fence();

@@ -38,6 +38,27 @@ mpm::CaseConfig soilBlockCase( const int n );
 //! A case of cases/ (no stages if the file cannot be read).
 mpm::CaseConfig projectCase( const std::string& file );
 
+//! The step of a case's last stage (the slope's rainfall): its settings
+//! and size.
+struct StageStep
+{
+    mpm::StepSettings settings;
+    double dt = 0.0; //!< s
+};
+
+//! Applies `config`'s last stage to `sim` from its initial state; steps of
+//! `courant` times the CFL limit of that state.
+template <class ExecSpace>
+StageStep applyLastStage( mpm::Simulation<ExecSpace>& sim,
+                          const mpm::CaseConfig& config, const double courant )
+{
+    const mpm::StageConfig& stage = config.stages.back();
+    sim.applyStage( stage );
+    return {
+        { stage.gravity_m_per_s2[0], stage.gravity_m_per_s2[1], stage.damping },
+        courant * sim.waveSpeedLimit().dt_limit };
+}
+
 //! Runs benchmark b at the block sizes `cells_high` (cells across the
 //! block's height), in microseconds of real time.
 inline void blockSizes( benchmark::internal::Benchmark* b,

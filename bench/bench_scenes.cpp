@@ -62,12 +62,10 @@ void BM_caseSteps( benchmark::State& state, const mpm::CaseConfig& config,
         return;
     }
     mpm::Simulation<ExecSpace> sim( config );
-    // The last stage (the slope's rainfall), from the initial state.
-    const mpm::StageConfig& stage = config.stages.back();
-    sim.applyStage( stage );
-    const mpm::StepSettings settings{
-        stage.gravity_m_per_s2[0], stage.gravity_m_per_s2[1], stage.damping };
-    const double dt = courant * sim.waveSpeedLimit().dt_limit;
+    const mpm_bench::StageStep stage_step =
+        mpm_bench::applyLastStage( sim, config, courant );
+    const mpm::StepSettings settings = stage_step.settings;
+    const double dt = stage_step.dt;
     double kinetic_energy = 0.0;
     const auto step = [&]()
     {
