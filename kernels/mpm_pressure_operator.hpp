@@ -106,27 +106,34 @@ void assemblePressureOperator(
         KOKKOS_LAMBDA( const int m ) {
             const int ci = touched( m ) / ny, cj = touched( m ) % ny;
             double row[9] = {};
-            if ( unknown( ci, cj ) )
+            // Which of the 3 x 3 cells around (ci, cj) are unknowns: cell
+            // (ci + di, cj + dj) at 3 (di + 1) + (dj + 1), as the row's slots.
+            bool around[9];
+            for ( int slot = 0; slot < 9; ++slot )
+                around[slot] = unknown( ci + slot / 3 - 1, cj + slot % 3 - 1 );
+            if ( around[4] )
                 for ( int k = 0; k < 4; ++k )
                 {
                     const int ni = ci + k % 2, nj = cj + k / 2;
                     // The 4 cells of node (ni, nj): (ni - 1 + q % 2,
-                    // nj - 1 + q / 2); this one is q = 3 - k.
-                    bool block = true;
-                    for ( int q = 0; q < 4; ++q )
-                        block =
-                            block && unknown( ni - 1 + q % 2, nj - 1 + q / 2 );
+                    // nj - 1 + q / 2), at slot 3 (k % 2 + q % 2) + k / 2 +
+                    // q / 2 around (ci, cj); this one is q = 3 - k.
+                    const auto slotOf = [k]( const int q )
+                    { return 3 * ( k % 2 + q % 2 ) + k / 2 + q / 2; };
+                    const bool block =
+                        around[slotOf( 0 )] && around[slotOf( 1 )] &&
+                        around[slotOf( 2 )] && around[slotOf( 3 )];
                     const double tau =
                         0.5 * h * h * ( mu( ni, nj, 0 ) + mu( ni, nj, 1 ) );
                     const double sign_here = k == 0 || k == 3 ? 1.0 : -1.0;
                     for ( int q = 0; q < 4; ++q )
                     {
-                        const int oi = ni - 1 + q % 2, oj = nj - 1 + q / 2;
-                        if ( !unknown( oi, oj ) )
+                        const int slot = slotOf( q );
+                        if ( !around[slot] )
                             continue;
+                        const int oi = ni - 1 + q % 2, oj = nj - 1 + q / 2;
                         // Node (ni, nj) is corner 3 - q of cell (oi, oj).
                         const int kk = 3 - q;
-                        const int slot = 3 * ( oi - ci + 1 ) + ( oj - cj + 1 );
                         for ( int d = 0; d < 2; ++d )
                             row[slot] += g( ci, cj, 2 * k + d ) *
                                          mu( ni, nj, d ) *

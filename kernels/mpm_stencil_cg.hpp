@@ -4,8 +4,8 @@
 //---------------------------------------------------------------------------//
 // The pressure solve of a semi-implicit step (issue 13): a symmetric positive
 // definite system over grid nodes with the 9-point stencil of bilinear shape
-// functions, solved by Jacobi-preconditioned conjugate gradients, every
-// operation a Kokkos kernel over the list of unknown nodes.
+// functions, solved by preconditioned conjugate gradients (block DILU or
+// Jacobi), every operation a Kokkos kernel over the list of unknown nodes.
 //---------------------------------------------------------------------------//
 
 #include <mpm_device_type.hpp>
@@ -52,6 +52,29 @@ struct CgReport
     double tolerance = 0.0; //!< the solve's stopping ratio |r| / |b|
     bool converged = false;
 };
+
+/*!
+  \brief The preconditioner M of a solve. Jacobi: M = diag(A). BlockDilu:
+  the unknowns (in their list's order) split into `cg_blocks` blocks of
+  equal count, and on each M = (P + L) P^-1 (P + L)^T with L the strictly
+  lower part of A within the block and the pivots P chosen so that M and A
+  share their diagonal, p_m = a_mm - sum over lower neighbours j of the
+  block of a_mj a_jm / p_j (diagonal-based incomplete LU, "DILU"; a pivot
+  below `cg_min_pivot` a_mm is taken as a_mm). M is symmetric positive
+  definite for any positive pivots. On the slope's pressure systems it takes
+  a third of Jacobi's iterations (docs/formulation.md §9). The blocks do not
+  depend on the number of threads: each thread takes whole blocks.
+*/
+enum class CgPreconditioner
+{
+    BlockDilu,
+    Jacobi
+};
+
+//! The number of DILU blocks (CgPreconditioner::BlockDilu).
+constexpr int cg_blocks = 4;
+//! The smallest DILU pivot kept, relative to the diagonal.
+constexpr double cg_min_pivot = 0.05;
 
 namespace Impl
 {
@@ -167,12 +190,14 @@ double absSumOverNodes( const ExecSpace& exec,
 /*!
   \brief Work vectors of the solve, over the unknowns in the order of the
   system's `nodes` (index m): residual r, w = A z, search direction p,
-  s = A p and the inverse of A's diagonal; the preconditioned residual
-  z = M^-1 r over the grid nodes (read as a neighbour in A z: zero off the
-  unknowns). `rows`: each unknown's flat node index and 1 if all 8 of its
-  neighbours lie inside the grid; `partial`: each thread's share of an
-  iteration's sums, two buffers of a row per thread; `result`: what a solve
-  reports (TeamCg).
+  s = A p and the inverses of the preconditioner's pivots (Jacobi: A's
+  diagonal); the preconditioned residual z = M^-1 r over the grid nodes
+  (read as a neighbour in A z: zero off the unknowns). `rows`: each
+  unknown's flat node index and its flags (Impl::row_interior: all 8 of its
+  neighbours lie inside the grid; Impl::row_in_block: also every one that
+  is an unknown lies in its DILU block); `unknown_of`: each node's index m, -1
+  off the unknowns; `partial`: each thread's share of an iteration's sums, two
+  buffers of a row per thread; `result`: what a solve reports (TeamCg).
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct CgWorkspace
@@ -184,9 +209,10 @@ struct CgWorkspace
     //! iterations, |r|^2, |b|^2 and 1 if converged, else 0.
     using result_view =
         Kokkos::View<double[4], DeviceType<ExecSpace>, MemoryTraits>;
-    vector r, w, p, s, inverse_diagonal;
+    vector r, w, p, s, inverse_pivot;
     view z;
     Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> rows;
+    Kokkos::View<int*, DeviceType<ExecSpace>, MemoryTraits> unknown_of;
     sums_view partial;
     result_view result;
 
@@ -196,9 +222,10 @@ struct CgWorkspace
         , w( "cg_w", ( nx + 1 ) * ( ny + 1 ) )
         , p( "cg_p", ( nx + 1 ) * ( ny + 1 ) )
         , s( "cg_s", ( nx + 1 ) * ( ny + 1 ) )
-        , inverse_diagonal( "cg_inverse_diagonal", ( nx + 1 ) * ( ny + 1 ) )
+        , inverse_pivot( "cg_inverse_pivot", ( nx + 1 ) * ( ny + 1 ) )
         , z( "cg_z", nx + 1, ny + 1 )
         , rows( "cg_rows", ( nx + 1 ) * ( ny + 1 ) )
+        , unknown_of( "cg_unknown_of", ( nx + 1 ) * ( ny + 1 ) )
         , partial( "cg_partial_sums", 2 * ExecSpace::concurrency() )
         , result( "cg_result" )
     {
@@ -215,9 +242,10 @@ unmanaged( const CgWorkspace<ExecSpace>& w )
     u.w = w.w;
     u.p = w.p;
     u.s = w.s;
-    u.inverse_diagonal = w.inverse_diagonal;
+    u.inverse_pivot = w.inverse_pivot;
     u.z = w.z;
     u.rows = w.rows;
+    u.unknown_of = w.unknown_of;
     u.partial = w.partial;
     u.result = w.result;
     return u;
@@ -232,17 +260,22 @@ struct CgSums
     double gamma = 0.0, delta = 0.0, rr = 0.0;
 };
 
+//! Flags of an unknown's row (CgWorkspace::rows).
+constexpr int row_interior = 1;
+constexpr int row_in_block = 2;
+
 /*!
-  \brief solveJacobiCg in one kernel launch: one team whose threads share
-  the unknowns (TeamThreadRange: the same share in every phase). They meet
-  at a barrier wherever one reads what another wrote (z at the neighbours
-  in A z; the sums), and each adds the iteration's sums from the threads'
-  partials in the same order, so all take the same alpha, beta and stopping
-  decision. One launch per solve instead of two per iteration and five to
-  start: a 6-iteration solve on 1,089 unknowns took 72 us on 2 threads
-  against 131 us with a kernel per phase (docs/formulation.md §9). The
-  phases work on raw pointers (flat node indices, the work vectors in the
-  unknowns' order), which the compiler keeps in registers.
+  \brief solveStencilCg in one kernel launch: one team whose threads share
+  the unknowns, each a contiguous range of whole DILU blocks (the same in
+  every phase, so a thread preconditions the residual it updated). They
+  meet at a barrier wherever one reads what another wrote (z at the
+  neighbours in A z; the sums), and each adds the iteration's sums from
+  the threads' partials in the same order, so all take the same alpha, beta
+  and stopping decision. One launch per solve instead of two per iteration
+  and five to start: a 6-iteration solve on 1,089 unknowns took 72 us on 2
+  threads against 131 us with a kernel per phase (docs/formulation.md §9).
+  The phases work on raw pointers (flat node indices, the work vectors in
+  the unknowns' order), which the compiler keeps in registers.
 */
 template <class ExecSpace, class NodeView>
 struct TeamCg
@@ -255,6 +288,7 @@ struct TeamCg
     int num_nodes = 0;
     double tolerance = 0.0;
     int max_iterations = 0;
+    CgPreconditioner preconditioner = CgPreconditioner::BlockDilu;
 
     //! The sums of every thread's `mine`, the same on all of them.
     KOKKOS_INLINE_FUNCTION CgSums teamSums( const member_type& team,
@@ -279,25 +313,184 @@ struct TeamCg
         return all;
     }
 
-    //! f(m) for this thread's share of the unknowns: the same contiguous
-    //! range in every phase.
+    //! The first unknown of DILU block k (k = cg_blocks: the end).
+    KOKKOS_INLINE_FUNCTION int blockBegin( const int k ) const
+    {
+        return static_cast<int>( static_cast<long>( k ) * num_nodes /
+                                 cg_blocks );
+    }
+
+    //! This thread's blocks [first, last).
+    KOKKOS_INLINE_FUNCTION void myBlocks( const member_type& team, int& first,
+                                          int& last ) const
+    {
+        first = team.team_rank() * cg_blocks / team.team_size();
+        last = ( team.team_rank() + 1 ) * cg_blocks / team.team_size();
+    }
+
+    //! f(m) for this thread's share of the unknowns: its blocks' range.
     template <class F>
     KOKKOS_INLINE_FUNCTION void forMyNodes( const member_type& team,
                                             const F& f ) const
     {
-        const int chunk =
-            ( num_nodes + team.team_size() - 1 ) / team.team_size();
-        const int first = team.team_rank() * chunk;
-        const int begin = first < num_nodes ? first : num_nodes;
-        const int end = begin + chunk < num_nodes ? begin + chunk : num_nodes;
-        for ( int m = begin; m < end; ++m )
+        int first, last;
+        myBlocks( team, first, last );
+        const int end = blockBegin( last );
+        for ( int m = blockBegin( first ); m < end; ++m )
             f( m );
+    }
+
+    /*!
+      \brief f(slot, neighbour) for the neighbours of unknown m (flat node
+      n, `interior`: all 8 inside the grid) at the stencil's slots
+      [first, last) (0-3: the lower ones, 5-8: the upper ones) that are
+      unknowns of [begin, end).
+    */
+    template <class F>
+    KOKKOS_INLINE_FUNCTION void
+    forBlockNeighbours( const int n, const bool interior, const int first,
+                        const int last, const int begin, const int end,
+                        const int nx1, const int ny1, const F& f ) const
+    {
+        const int* const index = v.unknown_of.data();
+        const int i = n / ny1, j = n % ny1;
+        for ( int slot = first; slot < last; ++slot )
+        {
+            const int di = slot / 3 - 1, dj = slot % 3 - 1;
+            if ( !interior && ( i + di < 0 || i + di >= nx1 || j + dj < 0 ||
+                                j + dj >= ny1 ) )
+                continue;
+            const int neighbour = n + di * ny1 + dj;
+            const int k = index[neighbour];
+            if ( k >= begin && k < end )
+                f( slot, neighbour );
+        }
+    }
+
+    //! The DILU pivots of this thread's blocks (their inverses into the
+    //! work vector), and which of their rows lie in their block.
+    KOKKOS_INLINE_FUNCTION void factor( const member_type& team, const int nx1,
+                                        const int ny1 ) const
+    {
+        const double* const A = a.data();
+        int* const N = v.rows.data();
+        double* const D = v.inverse_pivot.data();
+        const int* const index = v.unknown_of.data();
+        int first, last;
+        myBlocks( team, first, last );
+        for ( int k = first; k < last; ++k )
+        {
+            const int begin = blockBegin( k ), end = blockBegin( k + 1 );
+            for ( int m = begin; m < end; ++m )
+            {
+                const int n = N[2 * m];
+                const bool interior = N[2 * m + 1] & row_interior;
+                const double diagonal = A[9 * n + 4];
+                double pivot = diagonal;
+                forBlockNeighbours( n, interior, 0, 4, begin, end, nx1, ny1,
+                                    [&]( const int slot, const int neighbour )
+                                    {
+                                        pivot -= A[9 * n + slot] *
+                                                 A[9 * neighbour + 8 - slot] *
+                                                 D[index[neighbour]];
+                                    } );
+                D[m] = 1.0 /
+                       ( pivot >= cg_min_pivot * diagonal ? pivot : diagonal );
+                // In its block if no unknown neighbour lies outside it.
+                int outside = 0;
+                for ( int slot = 0; interior && slot < 9; ++slot )
+                {
+                    const int j =
+                        index[n + ( slot / 3 - 1 ) * ny1 + slot % 3 - 1];
+                    outside += j >= 0 && ( j < begin || j >= end );
+                }
+                if ( interior && outside == 0 )
+                    N[2 * m + 1] = row_interior | row_in_block;
+            }
+        }
+    }
+
+    //! z = M^-1 r on this thread's blocks (a forward and a backward sweep
+    //! through each). A row in its block reads its neighbours unchecked (z
+    //! is 0 off the unknowns).
+    KOKKOS_INLINE_FUNCTION void
+    precondition( const member_type& team, const int nx1, const int ny1 ) const
+    {
+        const double* const A = a.data();
+        const int* const N = v.rows.data();
+        const double* const R = v.r.data();
+        const double* const D = v.inverse_pivot.data();
+        double* const Z = v.z.data();
+        int first, last;
+        myBlocks( team, first, last );
+        for ( int k = first; k < last; ++k )
+        {
+            const int begin = blockBegin( k ), end = blockBegin( k + 1 );
+            // (P + L) y = r, y into z. A row in its block takes its lower
+            // neighbour in the column, (i, j - 1), from the last row if that
+            // is it (else it is no unknown: 0), so that the sweep's chain of
+            // dependent rows runs through registers, not memory.
+            double last_y = 0.0;
+            for ( int m = begin; m < end; ++m )
+            {
+                const int n = N[2 * m];
+                const double* const c = A + 9 * n;
+                if ( N[2 * m + 1] & row_in_block )
+                {
+                    const double below =
+                        m > begin && N[2 * ( m - 1 )] == n - 1 ? last_y : 0.0;
+                    const double rest =
+                        R[m] - ( ( c[0] * Z[n - ny1 - 1] + c[1] * Z[n - ny1] ) +
+                                 c[2] * Z[n - ny1 + 1] );
+                    last_y = rest * D[m] - ( c[3] * D[m] ) * below;
+                }
+                else
+                {
+                    double sum = R[m];
+                    forBlockNeighbours(
+                        n, N[2 * m + 1] & row_interior, 0, 4, begin, end, nx1,
+                        ny1,
+                        [&]( const int slot, const int neighbour )
+                        { sum -= c[slot] * Z[neighbour]; } );
+                    last_y = sum * D[m];
+                }
+                Z[n] = last_y;
+            }
+            // (P + L^T) z = P y, the same way upwards: (i, j + 1).
+            double last_z = 0.0;
+            for ( int m = end - 1; m >= begin; --m )
+            {
+                const int n = N[2 * m];
+                const double* const c = A + 9 * n;
+                if ( N[2 * m + 1] & row_in_block )
+                {
+                    const double above =
+                        m + 1 < end && N[2 * ( m + 1 )] == n + 1 ? last_z : 0.0;
+                    const double rest =
+                        ( c[6] * Z[n + ny1 - 1] + c[7] * Z[n + ny1] ) +
+                        c[8] * Z[n + ny1 + 1];
+                    last_z = ( Z[n] - rest * D[m] ) - ( c[5] * D[m] ) * above;
+                }
+                else
+                {
+                    double sum = 0.0;
+                    forBlockNeighbours(
+                        n, N[2 * m + 1] & row_interior, 5, 9, begin, end, nx1,
+                        ny1,
+                        [&]( const int slot, const int neighbour )
+                        { sum += c[slot] * Z[neighbour]; } );
+                    last_z = Z[n] - sum * D[m];
+                }
+                Z[n] = last_z;
+            }
+        }
     }
 
     KOKKOS_INLINE_FUNCTION void operator()( const member_type& team ) const
     {
         const int nx1 = static_cast<int>( a.extent( 0 ) );
         const int ny1 = static_cast<int>( a.extent( 1 ) );
+        const bool jacobi = preconditioner == CgPreconditioner::Jacobi;
         const double* const A = a.data();
         const double* const B = b.data();
         double* const X = x.data();
@@ -306,35 +499,41 @@ struct TeamCg
         double* const W = v.w.data();
         double* const P = v.p.data();
         double* const S = v.s.data();
-        double* const D = v.inverse_diagonal.data();
+        double* const D = v.inverse_pivot.data();
+        int* const index = v.unknown_of.data();
         int* const N =
             v.rows.data(); // N[2 m]: flat index, N[2 m + 1]: interior
         // A z at unknown m (its flat index n).
         const auto row = [=]( const int m, const int n )
         {
-            return N[2 * m + 1] ? interiorRow( A, Z, n, ny1 )
-                                : edgeRow( A, Z, n, nx1, ny1 );
+            return ( N[2 * m + 1] & row_interior )
+                       ? interiorRow( A, Z, n, ny1 )
+                       : edgeRow( A, Z, n, nx1, ny1 );
         };
         int buffer = 0;
-        // The unknowns' rows and inverse diagonals; z = 0 off the unknowns
-        // (read as a neighbour), x on them; p = s = 0.
+        // z = 0 off the unknowns (read as a neighbour), x on them; the
+        // unknowns' rows and indices; p = s = 0.
+        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, nx1 * ny1 ),
+                              [=]( const int n )
+                              {
+                                  Z[n] = 0.0;
+                                  index[n] = -1;
+                              } );
+        team.team_barrier();
         forMyNodes( team,
                     [=]( const int m )
                     {
                         const int n = nodes( m );
                         N[2 * m] = n;
                         N[2 * m + 1] = isInteriorNode( n, nx1, ny1 );
-                        D[m] = 1.0 / A[9 * n + 4];
+                        index[n] = m;
+                        Z[n] = X[n];
                         P[m] = 0.0;
                         S[m] = 0.0;
                     } );
-        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, nx1 * ny1 ),
-                              [=]( const int n ) { Z[n] = 0.0; } );
         team.team_barrier();
-        forMyNodes( team, [=]( const int m ) { Z[N[2 * m]] = X[N[2 * m]]; } );
-        team.team_barrier();
-        // r = b - A x and |b|^2; then z = M^-1 r (after every thread has
-        // read its neighbours' z = x).
+        // r = b - A x and |b|^2; the pivots; then z = M^-1 r (after every
+        // thread has read its neighbours' z = x).
         double bb_mine = 0.0;
         forMyNodes( team,
                     [&]( const int m )
@@ -343,9 +542,22 @@ struct TeamCg
                         R[m] = B[n] - row( m, n );
                         bb_mine += B[n] * B[n];
                     } );
+        if ( jacobi )
+            forMyNodes( team, [=]( const int m )
+                        { D[m] = 1.0 / A[9 * N[2 * m] + 4]; } );
+        else
+            factor( team, nx1, ny1 );
         const double bb =
             teamSums( team, CgSums{ 0.0, 0.0, bb_mine }, buffer ).rr;
-        forMyNodes( team, [=]( const int m ) { Z[N[2 * m]] = R[m] * D[m]; } );
+        const auto preconditionResidual = [&]()
+        {
+            if ( jacobi )
+                forMyNodes( team,
+                            [=]( const int m ) { Z[N[2 * m]] = R[m] * D[m]; } );
+            else
+                precondition( team, nx1, ny1 );
+        };
+        preconditionResidual();
         team.team_barrier();
         // w = A z and this thread's share of the sums.
         const auto products = [&]()
@@ -382,8 +594,8 @@ struct TeamCg
                             S[m] = W[m] + beta * S[m];
                             X[n] += alpha * P[m];
                             R[m] -= alpha * S[m];
-                            Z[n] = R[m] * D[m];
                         } );
+            preconditionResidual();
             team.team_barrier();
             gamma_old = sums.gamma;
             alpha_old = alpha;
@@ -403,30 +615,31 @@ struct TeamCg
 
 /*!
   \brief Solves A x = b over the unknowns by conjugate gradients with the
-  Jacobi preconditioner M = diag(A) (A symmetric positive definite), from
-  the x given (the previous step's pressure is a good start). Stops at
-  |r| <= tolerance |b| or after max_iterations; x off the unknowns is left
-  as it is. The iteration is Chronopoulos & Gear's (1989) form of
-  preconditioned CG: the same iterates as the textbook form in exact
-  arithmetic, with s = A p kept by recurrence so that each iteration is one
-  update and one pass that forms w = A z with all three of its sums. The
-  whole solve is one kernel launch (Impl::TeamCg: one team of up to
+  preconditioner `preconditioner` (CgPreconditioner; A symmetric positive
+  definite), from the x given (the previous step's pressure is a good
+  start). Stops at |r| <= tolerance |b| or after max_iterations; x off the
+  unknowns is left as it is. The iteration is Chronopoulos & Gear's (1989)
+  form of preconditioned CG: the same iterates as the textbook form in
+  exact arithmetic, with s = A p kept by recurrence so that each iteration
+  is one update and one pass that forms w = A z with all three of its sums.
+  The whole solve is one kernel launch (Impl::TeamCg: one team of up to
   ExecSpace's concurrency threads).
 */
 template <class ExecSpace, class NodeView>
-CgReport
-solveJacobiCg( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
-               const NodeView& b, const NodeView& x, CgWorkspace<ExecSpace>& w,
-               const double tolerance, const int max_iterations )
+CgReport solveStencilCg(
+    const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
+    const NodeView& b, const NodeView& x, CgWorkspace<ExecSpace>& w,
+    const double tolerance, const int max_iterations,
+    const CgPreconditioner preconditioner = CgPreconditioner::BlockDilu )
 {
     // TeamCg reads b and x by flat node index.
     static_assert( std::is_same<typename NodeView::array_layout,
                                 Kokkos::LayoutRight>::value,
-                   "solveJacobiCg: b and x must be LayoutRight node views" );
+                   "solveStencilCg: b and x must be LayoutRight node views" );
     using Solve = Impl::TeamCg<ExecSpace, NodeView>;
     const Solve solve{ unmanaged( s.a ), unmanaged( s.nodes ), unmanaged( w ),
                        unmanaged( b ),   unmanaged( x ),       s.num_nodes,
-                       tolerance,        max_iterations };
+                       tolerance,        max_iterations,       preconditioner };
     const Kokkos::TeamPolicy<ExecSpace> probe( exec, 1, 1 );
     // As many threads as `partial` has rows in each of its two buffers.
     const int threads =

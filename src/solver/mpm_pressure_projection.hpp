@@ -69,11 +69,10 @@ inline PressureSolveSettings pressureSolveSettings( const SolverConfig& s )
   new time,
     sum_p V_p dtheta_p(dp_c) / dt + (K dp)_c = sum_p V_p (source_p - r*_p),
   K = G^T mu G (+ the checkerboard penalty) the water the corrected
-  velocities carry out of the cell, solved by Newton with
-  Jacobi-preconditioned conjugate gradients (every operation a Kokkos
-  kernel), then the nodal velocities corrected by dp's forces. The points
-  take their cell's dp_c in the step's point loop
-  (PorePressurePointUpdate, `projected`).
+  velocities carry out of the cell, solved by Newton with conjugate
+  gradients preconditioned by block DILU (every operation a Kokkos kernel), then
+  the nodal velocities corrected by dp's forces. The points take their cell's
+  dp_c in the step's point loop (PorePressurePointUpdate, `projected`).
 */
 template <class ExecSpace>
 class PressureProjection
@@ -235,8 +234,8 @@ class PressureProjection
                 { settings.cg_tolerance, 0.5 * target / residual_norm,
                   std::min( forcing, PressureSolveSettings::max_forcing ) } );
             Kokkos::deep_copy( exec, _e_c, 0.0 );
-            _last = solveJacobiCg( exec, _system, _residual_c, _e_c, _work,
-                                   cg_tolerance, settings.cg_max_iterations );
+            _last = solveStencilCg( exec, _system, _residual_c, _e_c, _work,
+                                    cg_tolerance, settings.cg_max_iterations );
             ++newton;
             _stats.iterations += _last.iterations;
             _stats.max_iterations =

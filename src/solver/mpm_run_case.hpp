@@ -406,8 +406,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
         metrics["pressure_solve"] = {
             { "method", "Newton on each cell's pressure increment, each "
-                        "linear solve by Jacobi-preconditioned conjugate "
-                        "gradients (picard_*: the Newton iteration)" },
+                        "linear solve by conjugate gradients preconditioned "
+                        "by block DILU (picard_*: the Newton iteration)" },
             { "tolerance", config.solver.pressure_tolerance },
             { "max_iterations_allowed",
               static_cast<int>( config.solver.pressure_max_iterations ) },
