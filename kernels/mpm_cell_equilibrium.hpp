@@ -265,14 +265,11 @@ void cellPressureSlopes( const ExecSpace& exec_space,
 
 //---------------------------------------------------------------------------//
 //! What cellWaterEquilibrium returns: the CFL limit of the points it
-//! listed, after its update, how many it listed and, in the semi-implicit
-//! scheme, their undrained limit (the explicit scheme's, Courant 1: the
-//! step's damping reference) as well.
+//! listed, after its update, and how many it listed.
 struct CellEquilibriumLimit
 {
     WaveSpeedLimit limit;
     int listed;
-    double undrained_dt_limit;
 };
 
 //---------------------------------------------------------------------------//
@@ -287,9 +284,7 @@ struct CellEquilibriumLimit
   v_w - v_s becomes the mass-weighted mean). Returns the CFL limit of the
   listed points' new state (as criticalTimeStepTwoPhase, with `skeleton`
   in the semi-implicit scheme) and how many were
-  listed: the step's cached limit, taken before, would be stale. With
-  `skeleton`, the same reduction takes their undrained limit (as
-  criticalTimeStepTwoPhase without it); else that is the limit itself.
+  listed: the step's cached limit, taken before, would be stale.
 */
 template <class ExecSpace>
 CellEquilibriumLimit cellWaterEquilibrium(
@@ -317,14 +312,13 @@ CellEquilibriumLimit cellWaterEquilibrium(
     const double cell_size = grid.h;
     const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
     const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water, skeleton );
-    const TwoPhaseWaveSpeed<ExecSpace> undrained_speed( pv, wv, water );
 
-    CellEquilibriumLimit result{ { 0.0, 0.0 }, 0, 0.0 };
+    CellEquilibriumLimit result{ { 0.0, 0.0 }, 0 };
     Kokkos::parallel_reduce(
         "mpm::cell_equilibrium_solve",
         CellPolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c, double& dt_min, double& c_max, int& listed,
-                       double& undrained_dt_min ) {
+        KOKKOS_LAMBDA( const int c, double& dt_min, double& c_max,
+                       int& listed ) {
             const auto solve_cell = [&]()
             {
                 const int begin = offset_c( c );
@@ -441,25 +435,14 @@ CellEquilibriumLimit cellWaterEquilibrium(
             for ( int a = offset_c( c ); a < offset_c( c + 1 ); ++a )
             {
                 const int p = points_c( a );
-                const physics::MaterialParams& params =
-                    materials[points.material_p( p )];
-                addPointLimit( wave_speed, p, params, cell_size, dt_min,
-                               c_max );
-                if ( skeleton )
-                {
-                    double undrained_c_max = 0.0;
-                    addPointLimit( undrained_speed, p, params, cell_size,
-                                   undrained_dt_min, undrained_c_max );
-                }
+                addPointLimit( wave_speed, p, materials[points.material_p( p )],
+                               cell_size, dt_min, c_max );
                 ++listed;
             }
         },
         Kokkos::Min<double>( result.limit.dt_limit ),
         Kokkos::Max<double>( result.limit.max_wave_speed ),
-        Kokkos::Sum<int>( result.listed ),
-        Kokkos::Min<double>( result.undrained_dt_limit ) );
-    if ( !skeleton )
-        result.undrained_dt_limit = result.limit.dt_limit;
+        Kokkos::Sum<int>( result.listed ) );
     return result;
 }
 

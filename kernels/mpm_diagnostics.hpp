@@ -24,9 +24,6 @@ struct StepDiagnostics
     double max_speed2;     //!< max |v_p|^2 of the sound points, m^2/s^2
     int first_unsound;     //!< smallest index failing PointSoundness, or
                            //!< the number of points if none
-    //! The semi-implicit scheme's damping reference, the undrained CFL
-    //! limit (Courant 1), s, if a loop took it (else 0).
-    double undrained_dt_limit = 0.0;
 };
 
 //---------------------------------------------------------------------------//

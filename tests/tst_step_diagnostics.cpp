@@ -65,28 +65,6 @@ TYPED_TEST( StepDiagnostics, cached_values_equal_fresh_reductions )
 }
 
 //---------------------------------------------------------------------------//
-// The semi-implicit step's damping reference (the undrained CFL limit),
-// taken in the cell equilibrium's reduction, is the separate reduction's.
-TYPED_TEST( StepDiagnostics, cached_damping_reference_equals_fresh_reduction )
-{
-    auto config = unsaturatedColumn( false );
-    config.solver.scheme = mpm::TwoPhaseScheme::SemiImplicit;
-    mpm::Simulation<TypeParam> sim( config );
-    const mpm::StepSettings settings{ 0.0, -9.81, 0.0 };
-    for ( int k = 0; k < 30; ++k )
-    {
-        const double dt = 0.5 * sim.waveSpeedLimit().dt_limit;
-        sim.advance( dt, settings );
-        const double cached = sim.dampingReferenceStep();
-        sim.stateChanged(); // forces the separate reduction
-        const double fresh = sim.dampingReferenceStep();
-        EXPECT_EQ( cached, fresh ) << "step " << k;
-        // The skeleton's step is the longer one.
-        EXPECT_LT( fresh, sim.waveSpeedLimit().dt_limit ) << "step " << k;
-    }
-}
-
-//---------------------------------------------------------------------------//
 // Reusing the stored retention state (and skipping held points) changes
 // nothing: the run equals one that forgets it every step.
 TYPED_TEST( StepDiagnostics, stored_retention_state_changes_nothing )

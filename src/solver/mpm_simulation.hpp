@@ -306,6 +306,17 @@ class Simulation
         return describePoint( particles, water_particles, p, what, step, time );
     }
 
+  private:
+    //! True if _diagnostics describe the current state.
+    bool diagnosticsCurrent() const { return _diagnostics_step == step; }
+
+    //! FLIP fraction of a step of size dt (physics::stepFlipFraction).
+    double stepFlipFraction( const double dt ) const
+    {
+        return physics::stepFlipFraction( solver.flip_fraction, dt,
+                                          dampingReferenceStep() );
+    }
+
     /*!
       \brief The step at which the FLIP/PIC blend is `flip_fraction`: the
       explicit scheme's CFL limit (Courant number 1), in both schemes, so
@@ -319,27 +330,10 @@ class Simulation
     {
         if ( !semiImplicit() )
             return waveSpeedLimit().dt_limit;
-        // The last step's cell equilibrium took it with the state's CFL
-        // limit (the same minimum over the same points).
-        const double undrained =
-            diagnosticsCurrent() && _diagnostics.undrained_dt_limit > 0.0
-                ? _diagnostics.undrained_dt_limit
-                : criticalTimeStepTwoPhase( ExecSpace(), particles,
-                                            water_particles, materials, water,
-                                            grid.geometry.h )
-                      .dt_limit;
-        return undrained * std::sqrt( solver.inertia_scaling );
-    }
-
-  private:
-    //! True if _diagnostics describe the current state.
-    bool diagnosticsCurrent() const { return _diagnostics_step == step; }
-
-    //! FLIP fraction of a step of size dt (physics::stepFlipFraction).
-    double stepFlipFraction( const double dt ) const
-    {
-        return physics::stepFlipFraction( solver.flip_fraction, dt,
-                                          dampingReferenceStep() );
+        const WaveSpeedLimit undrained =
+            criticalTimeStepTwoPhase( ExecSpace(), particles, water_particles,
+                                      materials, water, grid.geometry.h );
+        return undrained.dt_limit * std::sqrt( solver.inertia_scaling );
     }
 
     //! B-bar: the cell averages of the step's velocity gradients.
@@ -467,18 +461,14 @@ class Simulation
                     exec, particles, water_particles, grid.geometry, materials,
                     water, saturated, solver.cell_pressure_slope, _cell_lists,
                     semiImplicit() );
-                const bool all_listed =
-                    after.listed == numActivePoints() - report.num_removed;
                 const WaveSpeedLimit limit =
-                    all_listed
+                    after.listed == numActivePoints() - report.num_removed
                         ? after.limit
                         : criticalTimeStepTwoPhase(
                               exec, particles, water_particles, materials,
                               water, grid.geometry.h, semiImplicit() );
                 report.diagnostics.dt_limit = limit.dt_limit;
                 report.diagnostics.max_wave_speed = limit.max_wave_speed;
-                report.diagnostics.undrained_dt_limit =
-                    all_listed ? after.undrained_dt_limit : 0.0;
             }
             // S_p and dS_dp_p now hold the retention law at p_w_p.
             _retention_current = !saturated;
