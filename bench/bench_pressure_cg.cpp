@@ -68,23 +68,22 @@ void cgSizes( benchmark::internal::Benchmark* b )
     mpm_bench::blockSizes( b, { 21, 34, 100 } );
 }
 
-using mpm::CgPreconditioner;
-const bool serial_cg =
-    ( mpm_bench::addBenchmark(
-          "pressure_cg_dilu/Serial",
-          BM_pressureCg<Kokkos::Serial, CgPreconditioner::BlockDilu>, cgSizes ),
-      mpm_bench::addBenchmark(
-          "pressure_cg_jacobi/Serial",
-          BM_pressureCg<Kokkos::Serial, CgPreconditioner::Jacobi>, cgSizes ),
-      true );
+//! Registers the solve on `backend` with each preconditioner.
+template <class ExecSpace>
+bool addCgBenchmarks( const std::string& backend )
+{
+    using mpm::CgPreconditioner;
+    mpm_bench::addBenchmark(
+        "pressure_cg_dilu/" + backend,
+        BM_pressureCg<ExecSpace, CgPreconditioner::BlockDilu>, cgSizes );
+    mpm_bench::addBenchmark( "pressure_cg_jacobi/" + backend,
+                             BM_pressureCg<ExecSpace, CgPreconditioner::Jacobi>,
+                             cgSizes );
+    return true;
+}
+
+const bool serial_cg = addCgBenchmarks<Kokkos::Serial>( "Serial" );
 #ifdef KOKKOS_ENABLE_OPENMP
-const bool openmp_cg =
-    ( mpm_bench::addBenchmark(
-          "pressure_cg_dilu/OpenMP",
-          BM_pressureCg<Kokkos::OpenMP, CgPreconditioner::BlockDilu>, cgSizes ),
-      mpm_bench::addBenchmark(
-          "pressure_cg_jacobi/OpenMP",
-          BM_pressureCg<Kokkos::OpenMP, CgPreconditioner::Jacobi>, cgSizes ),
-      true );
+const bool openmp_cg = addCgBenchmarks<Kokkos::OpenMP>( "OpenMP" );
 #endif
 } // namespace

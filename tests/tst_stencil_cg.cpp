@@ -14,6 +14,10 @@ MPM_TEST_BACKEND_SUITE( StencilCg );
 
 const double pi = std::acos( -1.0 );
 
+//! The preconditioners every solve test runs with.
+const mpm::CgPreconditioner both_preconditioners[2] = {
+    mpm::CgPreconditioner::BlockDilu, mpm::CgPreconditioner::Jacobi };
+
 // -lap p = f for p = sin(pi x) y (1 - y), f = (pi^2 y (1 - y) + 2) sin(pi x),
 // on the unit square (p = 0 on its edge; p is not an eigenvector of the
 // stencil, so CG needs many iterations),
@@ -118,8 +122,7 @@ struct PoissonProblem
 // meets the residual asked for, with either preconditioner.
 TYPED_TEST( StencilCg, poisson_converges_at_second_order )
 {
-    for ( const auto preconditioner :
-          { mpm::CgPreconditioner::BlockDilu, mpm::CgPreconditioner::Jacobi } )
+    for ( const auto preconditioner : both_preconditioners )
     {
         double error[2], residual;
         const int cells[2] = { 16, 32 };
@@ -145,8 +148,7 @@ TYPED_TEST( StencilCg, poisson_converges_at_second_order )
 // and gives the same solution.
 TYPED_TEST( StencilCg, preconditioners_undo_a_diagonal_scaling )
 {
-    for ( const auto preconditioner :
-          { mpm::CgPreconditioner::BlockDilu, mpm::CgPreconditioner::Jacobi } )
+    for ( const auto preconditioner : both_preconditioners )
     {
         PoissonProblem<TypeParam> plain( 32, false ), scaled( 32, true );
         const mpm::CgReport plain_report = plain.solve( 1e-10, preconditioner );
@@ -203,15 +205,13 @@ TYPED_TEST( StencilCg, block_dilu_takes_fewer_iterations_than_jacobi )
     using node_view = Kokkos::View<double**, mpm::DeviceType<TypeParam>>;
     const node_view x[2] = { node_view( "x_dilu", n + 1, n + 1 ),
                              node_view( "x_jacobi", n + 1, n + 1 ) };
-    const mpm::CgPreconditioner preconditioners[2] = {
-        mpm::CgPreconditioner::BlockDilu, mpm::CgPreconditioner::Jacobi };
     int iterations[2];
     for ( int c = 0; c < 2; ++c )
     {
         mpm::CgWorkspace<TypeParam> work( n, n );
         const mpm::CgReport report =
             mpm::solveStencilCg( TypeParam(), system, b, x[c], work, 1e-10,
-                                 10 * m, preconditioners[c] );
+                                 10 * m, both_preconditioners[c] );
         EXPECT_TRUE( report.converged );
         iterations[c] = report.iterations;
     }
@@ -327,8 +327,7 @@ TYPED_TEST( StencilCg, edge_unknowns_match_a_dense_solve )
         exact[r] = sum / l[r * m + r];
     }
 
-    for ( const auto preconditioner :
-          { mpm::CgPreconditioner::BlockDilu, mpm::CgPreconditioner::Jacobi } )
+    for ( const auto preconditioner : both_preconditioners )
     {
         Kokkos::deep_copy( x, 0.0 );
         mpm::CgWorkspace<TypeParam> work( nx1 - 1, ny1 - 1 );
