@@ -37,6 +37,8 @@ struct CellPointLists
     Kokkos::View<double* [2], device_type> slope_c;  //!< dp_w/dx, Pa/m
     Kokkos::View<double* [2], device_type> bound_c;  //!< p_w range, Pa
     Kokkos::View<double*, device_type> change_p; //!< water volume change, m^3
+    Kokkos::View<int*, device_type> occupied;    //!< the cells with points
+    int num_occupied = 0;                        //!< in index order
 
     CellPointLists() = default;
     CellPointLists( const int num_points, const int num_cells )
@@ -49,6 +51,7 @@ struct CellPointLists
         , slope_c( "slope_c", num_cells )
         , bound_c( "bound_c", num_cells )
         , change_p( "water_change_p", num_points )
+        , occupied( "occupied_cells", num_cells )
     {
         Kokkos::deep_copy( cell_p, -2 ); // no key: the first call lists
     }
@@ -57,16 +60,23 @@ struct CellPointLists
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The policy of the loops over cells: dynamic chunks. Most cells of a
-  slope's grid are empty, and static halves gave one thread nearly every
-  occupied cell (the equilibrium solve ran 1.2x faster on 2 threads than
-  on 1). Each cell's work reads and writes its own cell and points only, and
-  the reductions are minima, maxima and integer counts, so the results do not
-  depend on how the cells are split.
+  \brief f(c) for each cell c with points (CellPointLists::occupied), in
+  static shares: the cells in index order, column by column, so that a
+  thread takes about the cells of its share of the points (which the
+  generator orders by cell column) and finds their data in its own cache.
+  Each cell's work reads and writes its own cell and points only, and the
+  reductions are minima, maxima and integer counts, so the results do not
+  depend on how the cells are split. (Over every cell of the grid, most of
+  them empty, static halves gave one thread nearly every occupied cell.)
 */
 template <class ExecSpace>
-using CellPolicy =
-    Kokkos::RangePolicy<ExecSpace, Kokkos::Schedule<Kokkos::Dynamic>>;
+Kokkos::RangePolicy<ExecSpace, Kokkos::Schedule<Kokkos::Static>>
+occupiedCellPolicy( const ExecSpace& exec_space,
+                    const CellPointLists<ExecSpace>& lists )
+{
+    return Kokkos::RangePolicy<ExecSpace, Kokkos::Schedule<Kokkos::Static>>(
+        exec_space, 0, lists.num_occupied );
+}
 
 //---------------------------------------------------------------------------//
 /*!
@@ -83,7 +93,7 @@ void listCellPoints( const ExecSpace& exec_space,
                      const ParticleViews<ExecSpace>& pv,
                      const WaterParticleViews<ExecSpace>& wv,
                      const physics::GridGeometry& grid,
-                     const CellPointLists<ExecSpace>& lists )
+                     CellPointLists<ExecSpace>& lists )
 {
     const int num_cells = grid.nx * grid.ny;
     const int num_points = pv.size();
@@ -144,10 +154,22 @@ void listCellPoints( const ExecSpace& exec_space,
             points_c( offset_c( c ) +
                       Kokkos::atomic_fetch_add( &fill_c( c ), 1 ) ) = p;
         } );
+    const auto occupied = unmanaged( lists.occupied );
+    Kokkos::parallel_scan(
+        "mpm::cell_points_occupied",
+        Kokkos::RangePolicy<ExecSpace>( exec_space, 0, num_cells ),
+        KOKKOS_LAMBDA( const int c, int& k, const bool final ) {
+            if ( offset_c( c + 1 ) == offset_c( c ) )
+                return;
+            if ( final )
+                occupied( k ) = c;
+            ++k;
+        },
+        lists.num_occupied );
     Kokkos::parallel_for(
-        "mpm::cell_points_sort",
-        CellPolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c ) {
+        "mpm::cell_points_sort", occupiedCellPolicy( exec_space, lists ),
+        KOKKOS_LAMBDA( const int k ) {
+            const int c = occupied( k );
             // Insertion sort (a cell holds a few points).
             const auto key = [&]( const int p )
             { return p + ( cell_p( p ) % 2 == 1 ? num_points : 0 ); };
@@ -180,7 +202,7 @@ void cellPressureSlopes( const ExecSpace& exec_space,
                          const physics::GridGeometry& grid,
                          const CellPointLists<ExecSpace>& lists )
 {
-    const int num_cells = grid.nx * grid.ny;
+    const auto occupied = unmanaged( lists.occupied );
     const auto points = unmanaged( pv );
     const auto water_points = unmanaged( wv );
     const auto offset_c = unmanaged( lists.offset_c );
@@ -194,9 +216,9 @@ void cellPressureSlopes( const ExecSpace& exec_space,
     const double reach = 0.5 * grid.h;
 
     Kokkos::parallel_for(
-        "mpm::cell_pressure_levels",
-        CellPolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c ) {
+        "mpm::cell_pressure_levels", occupiedCellPolicy( exec_space, lists ),
+        KOKKOS_LAMBDA( const int k ) {
+            const int c = occupied( k );
             const int begin = offset_c( c );
             const int count = offset_c( c + 1 ) - begin;
             double p = 0.0, x = 0.0, y = 0.0;
@@ -213,9 +235,9 @@ void cellPressureSlopes( const ExecSpace& exec_space,
             centre_c( c, 1 ) = y * inv;
         } );
     Kokkos::parallel_for(
-        "mpm::cell_pressure_slopes",
-        CellPolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c ) {
+        "mpm::cell_pressure_slopes", occupiedCellPolicy( exec_space, lists ),
+        KOKKOS_LAMBDA( const int k ) {
+            const int c = occupied( k );
             slope_c( c, 0 ) = 0.0;
             slope_c( c, 1 ) = 0.0;
             bound_c( c, 0 ) = level_c( c );
@@ -292,7 +314,7 @@ CellEquilibriumLimit cellWaterEquilibrium(
     const WaterParticleViews<ExecSpace>& wv, const physics::GridGeometry& grid,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const bool saturated, const bool linear_profile,
-    const CellPointLists<ExecSpace>& lists, const bool skeleton = false )
+    CellPointLists<ExecSpace>& lists, const bool skeleton = false )
 {
     listCellPoints( exec_space, pv, wv, grid, lists );
     if ( linear_profile )
@@ -300,7 +322,7 @@ CellEquilibriumLimit cellWaterEquilibrium(
     else
         Kokkos::deep_copy( exec_space, lists.slope_c, 0.0 );
 
-    const int num_cells = grid.nx * grid.ny;
+    const auto occupied = unmanaged( lists.occupied );
     const auto points = unmanaged( pv );
     const auto water_points = unmanaged( wv );
     const auto offset_c = unmanaged( lists.offset_c );
@@ -315,10 +337,10 @@ CellEquilibriumLimit cellWaterEquilibrium(
 
     CellEquilibriumLimit result{ { 0.0, 0.0 }, 0 };
     Kokkos::parallel_reduce(
-        "mpm::cell_equilibrium_solve",
-        CellPolicy<ExecSpace>( exec_space, 0, num_cells ),
-        KOKKOS_LAMBDA( const int c, double& dt_min, double& c_max,
+        "mpm::cell_equilibrium_solve", occupiedCellPolicy( exec_space, lists ),
+        KOKKOS_LAMBDA( const int k, double& dt_min, double& c_max,
                        int& listed ) {
+            const int c = occupied( k );
             const auto solve_cell = [&]()
             {
                 const int begin = offset_c( c );

@@ -117,66 +117,101 @@ void newtonStorageSums( const ExecSpace& exec,
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief The water residual at the unknown cells of s,
+  \brief The water residual at the unknown cells of s, in one pass,
     R_c = b_c - sum_p V dtheta_p / dt - (K dp)_c,
-  with `k_dp` = K dp (the flow part alone: A's diagonal holds k_diagonal
-  when it was applied); then puts the tangent storage at the iterate on
-  A's diagonal. Takes the sums of the unknowns (newtonStorageSums: only
-  the unknowns' points contribute, every other cell's dp is 0).
+  with K dp the flow part of A (its neighbours' entries and K's own
+  diagonal `k_diagonal`, whatever A's diagonal holds); then puts K's
+  diagonal plus the tangent storage at the iterate on A's diagonal (a row
+  writes only its own diagonal, which no other row reads). Takes the sums
+  of the unknowns (newtonStorageSums: only the unknowns' points contribute,
+  every other cell's dp is 0). Returns |R|^2 over the unknowns.
 */
 template <class ExecSpace, class CellView>
-void newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
-                     const CellView& b_c, const CellView& k_diagonal_c,
-                     const CellView& k_dp_c, const CellView& residual_c,
-                     NodeStencilSystem<ExecSpace>& s )
+double newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
+                       const CellView& b_c, const CellView& k_diagonal_c,
+                       const CellView& dp_c, const CellView& residual_c,
+                       NodeStencilSystem<ExecSpace>& s )
 {
     using F = NewtonCellField;
+    static_assert( std::is_same<typename CellView::array_layout,
+                                Kokkos::LayoutRight>::value,
+                   "newtonResidual: cell views must be LayoutRight" );
     const auto handle = sums.handle();
-    const auto b = unmanaged( b_c );
-    const auto k_diagonal = unmanaged( k_diagonal_c );
-    const auto k_dp = unmanaged( k_dp_c );
-    const auto residual = unmanaged( residual_c );
-    const auto a = unmanaged( s.a );
-    forEachUnknownCell(
-        "mpm::pressure_newton_residual", exec, s,
-        static_cast<int>( b_c.extent( 1 ) ),
-        KOKKOS_LAMBDA( const int c, const int i, const int j ) {
-            residual( i, j ) =
-                b( i, j ) - handle.take( c, F::stored ) - k_dp( i, j );
-            a( i, j, 4 ) = k_diagonal( i, j ) + handle.take( c, F::tangent );
-        } );
+    const auto cells = unmanaged( s.nodes );
+    const double* const b = b_c.data();
+    const double* const k_diagonal = k_diagonal_c.data();
+    const double* const dp = dp_c.data();
+    double* const residual = residual_c.data();
+    double* const a = s.a.data();
+    const int nx = static_cast<int>( s.a.extent( 0 ) );
+    const int ny = static_cast<int>( s.a.extent( 1 ) );
+    double rr = 0.0;
+    Kokkos::parallel_reduce(
+        "mpm::pressure_newton_residual",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m, double& sum ) {
+            const int c = cells( m );
+            const double k_dp =
+                Impl::neighbourSum( a, dp, c, nx, ny ) + k_diagonal[c] * dp[c];
+            const double r = b[c] - handle.take( c, F::stored ) - k_dp;
+            residual[c] = r;
+            a[9 * c + 4] = k_diagonal[c] + handle.take( c, F::tangent );
+            sum += r * r;
+        },
+        rr );
+    return rr;
 }
 
-//! A's diagonal set to K's alone (k_diagonal) on the unknowns of s.
+//---------------------------------------------------------------------------//
+/*!
+  \brief newtonResidual at dp = 0 without a pass over the points: there
+  the stored water is 0 and the tangent storage is the points' storage at
+  their p_w, storage_c / dt (pressurePointTerms, with the stored retention
+  state), so R_c = b_c and A's diagonal is K's plus storage_c / dt. Sets
+  dp = 0 on the unknowns; returns |R|^2 = |b|^2.
+*/
 template <class ExecSpace, class CellView>
-void restoreFlowDiagonal( const ExecSpace& exec, const CellView& k_diagonal_c,
-                          NodeStencilSystem<ExecSpace>& s )
+double newtonResidualAtZero( const ExecSpace& exec, const CellView& b_c,
+                             const CellView& storage_c,
+                             const CellView& k_diagonal_c, const double dt,
+                             const CellView& dp_c, const CellView& residual_c,
+                             NodeStencilSystem<ExecSpace>& s )
 {
-    const auto k_diagonal = unmanaged( k_diagonal_c );
-    const auto a = unmanaged( s.a );
-    forEachUnknownCell(
-        "mpm::pressure_flow_diagonal", exec, s,
-        static_cast<int>( k_diagonal_c.extent( 1 ) ),
-        KOKKOS_LAMBDA( const int, const int i, const int j ) {
-            a( i, j, 4 ) = k_diagonal( i, j );
-        } );
+    const auto cells = unmanaged( s.nodes );
+    const double* const b = b_c.data();
+    const double* const storage = storage_c.data();
+    const double* const k_diagonal = k_diagonal_c.data();
+    double* const dp = dp_c.data();
+    double* const residual = residual_c.data();
+    double* const a = s.a.data();
+    double rr = 0.0;
+    Kokkos::parallel_reduce(
+        "mpm::pressure_newton_residual_at_zero",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m, double& sum ) {
+            const int c = cells( m );
+            dp[c] = 0.0;
+            residual[c] = b[c];
+            a[9 * c + 4] = k_diagonal[c] + storage[c] / dt;
+            sum += b[c] * b[c];
+        },
+        rr );
+    return rr;
 }
 
-//! dp = base + step e on the unknowns of s.
+//! dp += step e on the unknowns of s.
 template <class ExecSpace, class CellView>
 void stepOverUnknowns( const ExecSpace& exec,
-                       const NodeStencilSystem<ExecSpace>& s,
-                       const CellView& base_c, const double step,
+                       const NodeStencilSystem<ExecSpace>& s, const double step,
                        const CellView& e_c, const CellView& dp_c )
 {
-    const auto base = unmanaged( base_c );
     const auto e = unmanaged( e_c );
     const auto dp = unmanaged( dp_c );
     forEachUnknownCell(
         "mpm::pressure_newton_step", exec, s,
         static_cast<int>( dp_c.extent( 1 ) ),
         KOKKOS_LAMBDA( const int, const int i, const int j ) {
-            dp( i, j ) = base( i, j ) + step * e( i, j );
+            dp( i, j ) += step * e( i, j );
         } );
 }
 

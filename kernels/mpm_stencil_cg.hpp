@@ -71,6 +71,14 @@ enum class CgPreconditioner
     Jacobi
 };
 
+//! Where a solve starts: from the x given, or from x = 0 (x is set to 0
+//! on the unknowns).
+enum class CgStart
+{
+    Given,
+    Zero
+};
+
 //! The number of DILU blocks (CgPreconditioner::BlockDilu).
 constexpr int cg_blocks = 4;
 //! The smallest DILU pivot kept, relative to the diagonal.
@@ -121,28 +129,23 @@ KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
     return sum;
 }
 
-//! y = A x over the unknowns (x = 0 off them, by construction).
-template <class ExecSpace, class NodeView>
-void applyStencil( const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
-                   const NodeView& x, const NodeView& y )
+//! Row n of the 9-point stencil times x without its diagonal term: the
+//! neighbours inside the grid (nx1 x ny1 nodes).
+KOKKOS_INLINE_FUNCTION double neighbourSum( const double* a, const double* x,
+                                            const int n, const int nx1,
+                                            const int ny1 )
 {
-    static_assert( std::is_same<typename NodeView::array_layout,
-                                Kokkos::LayoutRight>::value,
-                   "applyStencil: x and y must be LayoutRight node views" );
-    const auto nodes = unmanaged( s.nodes );
-    const double* const a = s.a.data();
-    const double* const xp = x.data();
-    double* const yp = y.data();
-    const int nx1 = static_cast<int>( s.a.extent( 0 ) );
-    const int ny1 = static_cast<int>( s.a.extent( 1 ) );
-    Kokkos::parallel_for(
-        "cg_apply", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m ) {
-            const int n = nodes( m );
-            yp[n] = isInteriorNode( n, nx1, ny1 )
-                        ? interiorRow( a, xp, n, ny1 )
-                        : edgeRow( a, xp, n, nx1, ny1 );
-        } );
+    const int i = n / ny1, j = n % ny1;
+    double sum = 0.0;
+    for ( int di = -1; di <= 1; ++di )
+        for ( int dj = -1; dj <= 1; ++dj )
+        {
+            const int ii = i + di, jj = j + dj;
+            if ( ( di != 0 || dj != 0 ) && ii >= 0 && ii < nx1 && jj >= 0 &&
+                 jj < ny1 )
+                sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
+        }
+    return sum;
 }
 
 //! Sum over the unknowns of u v.
@@ -196,8 +199,10 @@ double absSumOverNodes( const ExecSpace& exec,
   unknown's flat node index and its flags (Impl::row_interior: all 8 of its
   neighbours lie inside the grid; Impl::row_in_block: also every one that
   is an unknown lies in its DILU block); `unknown_of`: each node's index m, -1
-  off the unknowns; `partial`: each thread's share of an iteration's sums, two
-  buffers of a row per thread; `result`: what a solve reports (TeamCg).
+  off the unknowns (the last solve's; a solve clears only those);
+  `partial`: each thread's share of an iteration's sums, two buffers of a
+  row per thread, a row a cache line (no two threads write to one line);
+  `result`: what a solve reports (TeamCg) and how many unknowns it had.
 */
 template <class ExecSpace, class MemoryTraits = Kokkos::MemoryManaged>
 struct CgWorkspace
@@ -205,10 +210,10 @@ struct CgWorkspace
     using vector = Kokkos::View<double*, DeviceType<ExecSpace>, MemoryTraits>;
     using view = Kokkos::View<double**, DeviceType<ExecSpace>, MemoryTraits>;
     using sums_view =
-        Kokkos::View<double* [3], DeviceType<ExecSpace>, MemoryTraits>;
-    //! iterations, |r|^2, |b|^2 and 1 if converged, else 0.
+        Kokkos::View<double* [8], DeviceType<ExecSpace>, MemoryTraits>;
+    //! iterations, |r|^2, |b|^2, 1 if converged (else 0), the unknowns.
     using result_view =
-        Kokkos::View<double[4], DeviceType<ExecSpace>, MemoryTraits>;
+        Kokkos::View<double[5], DeviceType<ExecSpace>, MemoryTraits>;
     vector r, w, p, s, inverse_pivot;
     view z;
     Kokkos::View<int* [2], DeviceType<ExecSpace>, MemoryTraits> rows;
@@ -229,6 +234,7 @@ struct CgWorkspace
         , partial( "cg_partial_sums", 2 * ExecSpace::concurrency() )
         , result( "cg_result" )
     {
+        Kokkos::deep_copy( unknown_of, -1 );
     }
 };
 
@@ -289,6 +295,7 @@ struct TeamCg
     double tolerance = 0.0;
     int max_iterations = 0;
     CgPreconditioner preconditioner = CgPreconditioner::BlockDilu;
+    CgStart start = CgStart::Given;
 
     //! The sums of every thread's `mine`, the same on all of them.
     KOKKOS_INLINE_FUNCTION CgSums teamSums( const member_type& team,
@@ -501,8 +508,7 @@ struct TeamCg
         double* const S = v.s.data();
         double* const D = v.inverse_pivot.data();
         int* const index = v.unknown_of.data();
-        int* const N =
-            v.rows.data(); // N[2 m]: flat index, N[2 m + 1]: interior
+        int* const N = v.rows.data(); // N[2 m]: flat index, N[2 m + 1]: flags
         // A z at unknown m (its flat index n).
         const auto row = [=]( const int m, const int n )
         {
@@ -510,16 +516,19 @@ struct TeamCg
                        ? interiorRow( A, Z, n, ny1 )
                        : edgeRow( A, Z, n, nx1, ny1 );
         };
+        const bool zero_start = start == CgStart::Zero;
         int buffer = 0;
-        // z = 0 off the unknowns (read as a neighbour), x on them; the
-        // unknowns' rows and indices; p = s = 0.
-        Kokkos::parallel_for( Kokkos::TeamThreadRange( team, nx1 * ny1 ),
-                              [=]( const int n )
-                              {
-                                  Z[n] = 0.0;
-                                  index[n] = -1;
-                              } );
+        // z = 0 off the unknowns (read as a neighbour) and no index: every
+        // node is so but the last solve's unknowns.
+        Kokkos::parallel_for(
+            Kokkos::TeamThreadRange( team, static_cast<int>( v.result( 4 ) ) ),
+            [=]( const int m )
+            {
+                Z[N[2 * m]] = 0.0;
+                index[N[2 * m]] = -1;
+            } );
         team.team_barrier();
+        // z = x on the unknowns; their rows and indices; p = s = 0.
         forMyNodes( team,
                     [=]( const int m )
                     {
@@ -527,6 +536,8 @@ struct TeamCg
                         N[2 * m] = n;
                         N[2 * m + 1] = isInteriorNode( n, nx1, ny1 );
                         index[n] = m;
+                        if ( zero_start )
+                            X[n] = 0.0;
                         Z[n] = X[n];
                         P[m] = 0.0;
                         S[m] = 0.0;
@@ -608,6 +619,7 @@ struct TeamCg
             v.result( 1 ) = sums.rr;
             v.result( 2 ) = bb;
             v.result( 3 ) = Kokkos::Experimental::sqrt( sums.rr ) <= target;
+            v.result( 4 ) = num_nodes;
         }
     }
 };
@@ -617,29 +629,32 @@ struct TeamCg
   \brief Solves A x = b over the unknowns by conjugate gradients with the
   preconditioner `preconditioner` (CgPreconditioner; A symmetric positive
   definite), from the x given (the previous step's pressure is a good
-  start). Stops at |r| <= tolerance |b| or after max_iterations; x off the
-  unknowns is left as it is. The iteration is Chronopoulos & Gear's (1989)
-  form of preconditioned CG: the same iterates as the textbook form in
-  exact arithmetic, with s = A p kept by recurrence so that each iteration
-  is one update and one pass that forms w = A z with all three of its sums.
-  The whole solve is one kernel launch (Impl::TeamCg: one team of up to
-  ExecSpace's concurrency threads).
+  start) or, with CgStart::Zero, from x = 0. Stops at |r| <= tolerance |b| or
+  after max_iterations; x off the unknowns is left as it is. The iteration is
+  Chronopoulos & Gear's (1989) form of preconditioned CG: the same iterates as
+  the textbook form in exact arithmetic, with s = A p kept by recurrence so that
+  each iteration is one update and one pass that forms w = A z with all three of
+  its sums. The whole solve is one kernel launch (Impl::TeamCg: one team of up
+  to ExecSpace's concurrency threads).
 */
 template <class ExecSpace, class NodeView>
 CgReport solveStencilCg(
     const ExecSpace& exec, const NodeStencilSystem<ExecSpace>& s,
     const NodeView& b, const NodeView& x, CgWorkspace<ExecSpace>& w,
     const double tolerance, const int max_iterations,
-    const CgPreconditioner preconditioner = CgPreconditioner::BlockDilu )
+    const CgPreconditioner preconditioner = CgPreconditioner::BlockDilu,
+    const CgStart start = CgStart::Given )
 {
     // TeamCg reads b and x by flat node index.
     static_assert( std::is_same<typename NodeView::array_layout,
                                 Kokkos::LayoutRight>::value,
                    "solveStencilCg: b and x must be LayoutRight node views" );
     using Solve = Impl::TeamCg<ExecSpace, NodeView>;
-    const Solve solve{ unmanaged( s.a ), unmanaged( s.nodes ), unmanaged( w ),
-                       unmanaged( b ),   unmanaged( x ),       s.num_nodes,
-                       tolerance,        max_iterations,       preconditioner };
+    const Solve solve{ unmanaged( s.a ), unmanaged( s.nodes ),
+                       unmanaged( w ),   unmanaged( b ),
+                       unmanaged( x ),   s.num_nodes,
+                       tolerance,        max_iterations,
+                       preconditioner,   start };
     const Kokkos::TeamPolicy<ExecSpace> probe( exec, 1, 1 );
     // As many threads as `partial` has rows in each of its two buffers.
     const int threads =

@@ -365,4 +365,65 @@ TYPED_TEST( StencilCg, exact_start_stops_at_once_and_keeps_fixed_nodes )
     EXPECT_EQ( x_h( 0, 5 ), 7.0 );
 }
 
+// A workspace carries each solve's unknowns to the next, which clears only
+// those: a solve on fewer unknowns after one on many, from x = 0
+// (CgStart::Zero) with anything in x, takes the same iterations and gives
+// the same x as a fresh workspace (a stale neighbour's z would change it),
+// and leaves x off its unknowns as it was.
+TYPED_TEST( StencilCg, reused_workspace_solves_as_a_fresh_one )
+{
+    const int n = 16;
+    PoissonProblem<TypeParam> problem( n, false );
+    // The same stencil on the left half's unknowns (i < n / 2): their
+    // right neighbours are held at 0.
+    mpm::NodeStencilSystem<TypeParam> half = problem.system;
+    half.nodes = Kokkos::View<int*, mpm::DeviceType<TypeParam>>(
+        "half_nodes", problem.system.num_nodes );
+    auto half_h = Kokkos::create_mirror_view( half.nodes );
+    int m = 0;
+    for ( int i = 1; i < n / 2; ++i )
+        for ( int j = 1; j < n; ++j )
+            half_h( m++ ) = i * ( n + 1 ) + j;
+    half.num_nodes = m;
+    Kokkos::deep_copy( half.nodes, half_h );
+
+    using node_view = Kokkos::View<double**, mpm::DeviceType<TypeParam>>;
+    const node_view fresh( "fresh", n + 1, n + 1 ),
+        reused( "reused", n + 1, n + 1 );
+    for ( const auto preconditioner : both_preconditioners )
+    {
+        mpm::CgWorkspace<TypeParam> fresh_work( n, n ), work( n, n );
+        Kokkos::deep_copy( fresh, 0.0 );
+        const mpm::CgReport expected =
+            mpm::solveStencilCg( TypeParam(), half, problem.b, fresh,
+                                 fresh_work, 1e-10, 1000, preconditioner );
+        // Every interior node first, then the half from x = 0.
+        mpm::solveStencilCg( TypeParam(), problem.system, problem.b, problem.x,
+                             work, 1e-10, 1000, preconditioner );
+        Kokkos::deep_copy( reused, 5.0 );
+        const mpm::CgReport report = mpm::solveStencilCg(
+            TypeParam(), half, problem.b, reused, work, 1e-10, 1000,
+            preconditioner, mpm::CgStart::Zero );
+        EXPECT_TRUE( report.converged );
+        EXPECT_EQ( report.iterations, expected.iterations );
+        const auto fresh_h =
+            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), fresh );
+        const auto reused_h =
+            Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), reused );
+        double worst = 0.0, largest = 0.0;
+        for ( int i = 0; i <= n; ++i )
+            for ( int j = 0; j <= n; ++j )
+                if ( i >= 1 && i < n / 2 && j >= 1 && j < n )
+                {
+                    worst = std::max(
+                        worst, std::abs( reused_h( i, j ) - fresh_h( i, j ) ) );
+                    largest = std::max( largest, std::abs( fresh_h( i, j ) ) );
+                }
+                else
+                    EXPECT_EQ( reused_h( i, j ), 5.0 );
+        EXPECT_LT( worst, 1e-12 * largest )
+            << "preconditioner " << static_cast<int>( preconditioner );
+    }
+}
+
 } // namespace

@@ -43,18 +43,24 @@ twoPhaseWaveSpeed( const double constrained_modulus, const double rho_m,
 }
 
 //! Fastest wave of a two-phase point of solid mass `mass`, volume vol,
-//! initial volume vol0, porosity n and saturation S (twoPhaseWaveSpeed with the
-//! saturated fluid stiffness, dS/dp_w = 0: see mpm::criticalTimeStepTwoPhase),
-//! m/s.
+//! initial volume vol0, porosity n and saturation S > 0 (twoPhaseWaveSpeed
+//! with the saturated fluid stiffness, dS/dp_w = 0: see
+//! mpm::criticalTimeStepTwoPhase), m/s. With dS/dp_w = 0 the waves reduce to
+//! sqrt((E_c + S K_w / n) / rho_m) and sqrt(K_w / rho_w): one root, the
+//! larger square taken first (every point of every step takes it).
 KOKKOS_INLINE_FUNCTION double
 waveSpeedTwoPhase( const MaterialParams& m, const WaterParams& water,
                    const double mass, const double vol, const double vol0,
                    const double n, const double S )
 {
     const double rho_m = mass / vol + n * S * water.density;
-    return twoPhaseWaveSpeed(
-        m.constrainedModulus() * m.modulusFactor( vol, vol0 ), rho_m,
-        water.density, n, S, 0.0, water.bulk_modulus );
+    const double c2_mixture =
+        ( m.constrainedModulus() * m.modulusFactor( vol, vol0 ) +
+          S * water.bulk_modulus / n ) /
+        rho_m;
+    const double c2_water = water.bulk_modulus / water.density;
+    return Kokkos::Experimental::sqrt( c2_mixture > c2_water ? c2_mixture
+                                                             : c2_water );
 }
 
 //! Stable step h / (c + |v|) of a point (Courant number 1), s.

@@ -89,10 +89,8 @@ class PressureProjection
         , _forces( "pressure_forces", grid.numNodes() )
         , _newton( "pressure_newton", grid.nx * grid.ny )
         , _k_diagonal_c( "pressure_k_diagonal_c", grid.nx, grid.ny )
-        , _k_dp_c( "pressure_k_dp_c", grid.nx, grid.ny )
         , _residual_c( "pressure_residual_c", grid.nx, grid.ny )
         , _e_c( "pressure_e_c", grid.nx, grid.ny )
-        , _dp_old_c( "pressure_dp_old_c", grid.nx, grid.ny )
     {
     }
 
@@ -130,9 +128,6 @@ class PressureProjection
                               _mu_i );
         assemblePressureOperator( exec, grid, _terms, _mu_i, _system );
         keepStartOnUnknowns( exec, grid );
-        Kokkos::deep_copy(
-            exec, _k_diagonal_c,
-            Kokkos::subview( _system.a, Kokkos::ALL, Kokkos::ALL, 4 ) );
         _last = CgReport{ 0, 0.0, 0.0, 0.0, true };
         if ( _system.num_nodes > 0 )
         {
@@ -167,19 +162,25 @@ class PressureProjection
 
   private:
     //! dp_c = 0 off this step's unknowns (the solve's start on them: the
-    //! last step's increment).
+    //! last step's increment); on them, K's diagonal (A's, as assembled)
+    //! into _k_diagonal_c.
     void keepStartOnUnknowns( const ExecSpace& exec,
                               const physics::GridGeometry& grid )
     {
         const auto free_points = unmanaged( _terms.free_c );
         const auto storage = unmanaged( _terms.storage_c );
         const auto dp = unmanaged( _dp_c );
+        const auto k_diagonal = unmanaged( _k_diagonal_c );
+        const auto a = unmanaged( _system.a );
+        const int ny = grid.ny;
         Kokkos::parallel_for(
             "mpm::pressure_start",
-            Kokkos::MDRangePolicy<ExecSpace, Kokkos::Rank<2>>(
-                exec, { 0, 0 }, { grid.nx, grid.ny } ),
-            KOKKOS_LAMBDA( const int i, const int j ) {
-                if ( !isPressureUnknown( free_points, storage, i, j ) )
+            Kokkos::RangePolicy<ExecSpace>( exec, 0, grid.nx * grid.ny ),
+            KOKKOS_LAMBDA( const int c ) {
+                const int i = c / ny, j = c % ny;
+                if ( isPressureUnknown( free_points, storage, i, j ) )
+                    k_diagonal( i, j ) = a( i, j, 4 );
+                else
                     dp( i, j ) = 0.0;
             } );
     }
@@ -212,11 +213,10 @@ class PressureProjection
         const double b_norm = std::sqrt(
             Impl::dotOverNodes( exec, _system, _terms.b_c, _terms.b_c ) );
         double residual_norm = residualAt();
-        if ( !( residual_norm < b_norm ) )
-        {
-            Kokkos::deep_copy( exec, _dp_c, 0.0 );
-            residual_norm = residualAt();
-        }
+        if ( !( residual_norm < b_norm ) ) // from 0: no pass over the points
+            residual_norm = std::sqrt( newtonResidualAtZero(
+                exec, _terms.b_c, _terms.storage_c, _k_diagonal_c, dt, _dp_c,
+                _residual_c, _system ) );
         int newton = 0;
         const double target = settings.newton_tolerance * b_norm;
         // The linear solve's stopping ratio beyond the first (inexact
@@ -233,9 +233,10 @@ class PressureProjection
             const double cg_tolerance = std::max(
                 { settings.cg_tolerance, 0.5 * target / residual_norm,
                   std::min( forcing, PressureSolveSettings::max_forcing ) } );
-            Kokkos::deep_copy( exec, _e_c, 0.0 );
-            _last = solveStencilCg( exec, _system, _residual_c, _e_c, _work,
-                                    cg_tolerance, settings.cg_max_iterations );
+            _last =
+                solveStencilCg( exec, _system, _residual_c, _e_c, _work,
+                                cg_tolerance, settings.cg_max_iterations,
+                                CgPreconditioner::BlockDilu, CgStart::Zero );
             ++newton;
             _stats.iterations += _last.iterations;
             _stats.max_iterations =
@@ -246,11 +247,13 @@ class PressureProjection
                               _last.residual_norm / _last.rhs_norm );
             if ( !_last.converged )
                 return 0.0; // correct() stops the run with a diagnosis
-            Kokkos::deep_copy( exec, _dp_old_c, _dp_c );
-            double step = 1.0;
+            // dp_old + step e, step = 1, 1/2, 1/4, ...: dp moves by the
+            // change of the step.
+            double step = 1.0, taken = 0.0;
             for ( int halving = 0;; ++halving, step *= 0.5 )
             {
-                stepOverUnknowns( exec, _system, _dp_old_c, step, _e_c, _dp_c );
+                stepOverUnknowns( exec, _system, step - taken, _e_c, _dp_c );
+                taken = step;
                 const double norm = residualAt();
                 if ( norm < residual_norm || halving == 6 )
                 {
@@ -282,12 +285,9 @@ class PressureProjection
     {
         newtonStorageSums( exec, pv, wv, materials, water, saturated, grid,
                            _terms, _dp_c, dt, _newton );
-        restoreFlowDiagonal( exec, _k_diagonal_c, _system );
-        Impl::applyStencil( exec, _system, _dp_c, _k_dp_c );
-        newtonResidual( exec, _newton, _terms.b_c, _k_diagonal_c, _k_dp_c,
-                        _residual_c, _system );
-        return std::sqrt(
-            Impl::dotOverNodes( exec, _system, _residual_c, _residual_c ) );
+        return std::sqrt( newtonResidual( exec, _newton, _terms.b_c,
+                                          _k_diagonal_c, _dp_c, _residual_c,
+                                          _system ) );
     }
 
     PressurePointTerms<ExecSpace> _terms;
@@ -296,7 +296,7 @@ class PressureProjection
     CgWorkspace<ExecSpace> _work;
     PressureForceSums<ExecSpace> _forces;
     NewtonSums<ExecSpace> _newton;
-    cell_view _dp_c, _k_diagonal_c, _k_dp_c, _residual_c, _e_c, _dp_old_c;
+    cell_view _dp_c, _k_diagonal_c, _residual_c, _e_c;
     CgReport _last;
     PressureSolveStats _stats;
 };
