@@ -112,10 +112,11 @@ KOKKOS_INLINE_FUNCTION double interiorRow( const double* a, const double* x,
 }
 
 //! Row n of the 9-point stencil times x, neighbours outside the grid
-//! (nx1 x ny1 nodes) skipped.
+//! (nx1 x ny1 nodes) skipped; without the diagonal term unless `diagonal`.
 KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
                                        const int n, const int nx1,
-                                       const int ny1 )
+                                       const int ny1,
+                                       const bool diagonal = true )
 {
     const int i = n / ny1, j = n % ny1;
     double sum = 0.0;
@@ -123,7 +124,8 @@ KOKKOS_INLINE_FUNCTION double edgeRow( const double* a, const double* x,
         for ( int dj = -1; dj <= 1; ++dj )
         {
             const int ii = i + di, jj = j + dj;
-            if ( ii >= 0 && ii < nx1 && jj >= 0 && jj < ny1 )
+            if ( ( diagonal || di != 0 || dj != 0 ) && ii >= 0 && ii < nx1 &&
+                 jj >= 0 && jj < ny1 )
                 sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
         }
     return sum;
@@ -135,17 +137,7 @@ KOKKOS_INLINE_FUNCTION double neighbourSum( const double* a, const double* x,
                                             const int n, const int nx1,
                                             const int ny1 )
 {
-    const int i = n / ny1, j = n % ny1;
-    double sum = 0.0;
-    for ( int di = -1; di <= 1; ++di )
-        for ( int dj = -1; dj <= 1; ++dj )
-        {
-            const int ii = i + di, jj = j + dj;
-            if ( ( di != 0 || dj != 0 ) && ii >= 0 && ii < nx1 && jj >= 0 &&
-                 jj < ny1 )
-                sum += a[9 * n + 3 * ( di + 1 ) + dj + 1] * x[ii * ny1 + jj];
-        }
-    return sum;
+    return edgeRow( a, x, n, nx1, ny1, false );
 }
 
 //! Sum over the unknowns of u v.
