@@ -137,7 +137,6 @@ double newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
                                 Kokkos::LayoutRight>::value,
                    "newtonResidual: cell views must be LayoutRight" );
     const auto handle = sums.handle();
-    const auto cells = unmanaged( s.nodes );
     const double* const b = b_c.data();
     const double* const k_diagonal = k_diagonal_c.data();
     const double* const dp = dp_c.data();
@@ -145,21 +144,15 @@ double newtonResidual( const ExecSpace& exec, const NewtonSums<ExecSpace>& sums,
     double* const a = s.a.data();
     const int nx = static_cast<int>( s.a.extent( 0 ) );
     const int ny = static_cast<int>( s.a.extent( 1 ) );
-    double rr = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::pressure_newton_residual",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m, double& sum ) {
-            const int c = cells( m );
+    return Impl::sumOverUnknowns(
+        "mpm::pressure_newton_residual", exec, s, KOKKOS_LAMBDA( const int c ) {
             const double k_dp =
                 Impl::neighbourSum( a, dp, c, nx, ny ) + k_diagonal[c] * dp[c];
             const double r = b[c] - handle.take( c, F::stored ) - k_dp;
             residual[c] = r;
             a[9 * c + 4] = k_diagonal[c] + handle.take( c, F::tangent );
-            sum += r * r;
-        },
-        rr );
-    return rr;
+            return r * r;
+        } );
 }
 
 //---------------------------------------------------------------------------//
@@ -177,26 +170,20 @@ double newtonResidualAtZero( const ExecSpace& exec, const CellView& b_c,
                              const CellView& dp_c, const CellView& residual_c,
                              NodeStencilSystem<ExecSpace>& s )
 {
-    const auto cells = unmanaged( s.nodes );
     const double* const b = b_c.data();
     const double* const storage = storage_c.data();
     const double* const k_diagonal = k_diagonal_c.data();
     double* const dp = dp_c.data();
     double* const residual = residual_c.data();
     double* const a = s.a.data();
-    double rr = 0.0;
-    Kokkos::parallel_reduce(
-        "mpm::pressure_newton_residual_at_zero",
-        Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m, double& sum ) {
-            const int c = cells( m );
+    return Impl::sumOverUnknowns(
+        "mpm::pressure_newton_residual_at_zero", exec, s,
+        KOKKOS_LAMBDA( const int c ) {
             dp[c] = 0.0;
             residual[c] = b[c];
             a[9 * c + 4] = k_diagonal[c] + storage[c] / dt;
-            sum += b[c] * b[c];
-        },
-        rr );
-    return rr;
+            return b[c] * b[c];
+        } );
 }
 
 //! dp += step e on the unknowns of s.

@@ -27,7 +27,8 @@ struct PressureCellField
         rhs,      //!< sum V (source - r*), m^3/s
         storage,  //!< sum V C, m^3/Pa
         grad_0_x, //!< G: sum V dN_k/dx_d, node k = 0..3, m (8 fields)
-        free_points = grad_0_x + 8, //!< number of points with a free p_w
+        grad_S_0_x = grad_0_x + 8,    //!< G_S: sum S V dN_k/dx_d, m
+        free_points = grad_S_0_x + 8, //!< number of points with a free p_w
         count
     };
 };
@@ -46,8 +47,10 @@ struct PressureNodeField
 /*!
   \brief What the pressure equation needs of the points, per cell: the
   right side b_c, the storage sum storage_c, the gradient sums g_c of
-  each of its 4 nodes (G, the nodal forces of a unit pressure increment
-  of the cell's free points) and the number of free points free_c; per
+  each of its 4 nodes (G, the nodal water forces of a unit pressure
+  increment of the cell's free points per unit water fraction), g_S_c
+  (the same weighted by each point's S: the mixture forces, Bishop's
+  share) and the number of free points free_c; per
   node the volume and saturation sums (the nodal S of the mobility).
 */
 template <class ExecSpace>
@@ -60,7 +63,8 @@ struct PressurePointTerms
     Kokkos::View<int*, device_type> touched_c; //!< cells with points
     int num_touched = 0;
     cell_view b_c, storage_c;
-    Kokkos::View<double** [8], device_type> g_c; //!< (k, d) at 2 k + d
+    Kokkos::View<double** [8], device_type> g_c;   //!< (k, d) at 2 k + d
+    Kokkos::View<double** [8], device_type> g_S_c; //!< as g_c, times S
     Kokkos::View<int**, device_type> free_c;
 
     PressurePointTerms() = default;
@@ -71,6 +75,7 @@ struct PressurePointTerms
         , b_c( "pressure_b_c", grid.nx, grid.ny )
         , storage_c( "pressure_storage_c", grid.nx, grid.ny )
         , g_c( "pressure_g_c", grid.nx, grid.ny )
+        , g_S_c( "pressure_g_S_c", grid.nx, grid.ny )
         , free_c( "pressure_free_c", grid.nx, grid.ny )
     {
     }
@@ -187,6 +192,9 @@ void pressurePointTerms(
             {
                 access.add( cell, C::grad_0_x + 2 * k, vol * dwdx[k] );
                 access.add( cell, C::grad_0_x + 2 * k + 1, vol * dwdy[k] );
+                access.add( cell, C::grad_S_0_x + 2 * k, S * vol * dwdx[k] );
+                access.add( cell, C::grad_S_0_x + 2 * k + 1,
+                            S * vol * dwdy[k] );
             }
             access.add( cell, C::free_points, 1.0 );
         } );
@@ -195,8 +203,8 @@ void pressurePointTerms(
 //---------------------------------------------------------------------------//
 /*!
   \brief Takes the cells' sums (pressurePointTerms) into b_c, storage_c,
-  g_c and free_c: first zeros the cells the last call took, then lists the
-  cells with points now (touched_c) and takes theirs, so every other cell
+  g_c, g_S_c and free_c: first zeros the cells the last call took, then lists
+  the cells with points now (touched_c) and takes theirs, so every other cell
   holds zeros.
 */
 template <class ExecSpace>
@@ -210,6 +218,7 @@ void takePressureCellTerms( const ExecSpace& exec,
     const auto b = unmanaged( t.b_c );
     const auto storage = unmanaged( t.storage_c );
     const auto g = unmanaged( t.g_c );
+    const auto g_S = unmanaged( t.g_S_c );
     const auto free_points = unmanaged( t.free_c );
     const int ny = grid.ny;
     // take: from the sums (true) or zeros (false).
@@ -224,7 +233,10 @@ void takePressureCellTerms( const ExecSpace& exec,
                 b( i, j ) = value( F::rhs );
                 storage( i, j ) = value( F::storage );
                 for ( int f = 0; f < 8; ++f )
+                {
                     g( i, j, f ) = value( F::grad_0_x + f );
+                    g_S( i, j, f ) = value( F::grad_S_0_x + f );
+                }
                 free_points( i, j ) =
                     static_cast<int>( value( F::free_points ) );
             } );

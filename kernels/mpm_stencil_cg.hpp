@@ -140,25 +140,37 @@ KOKKOS_INLINE_FUNCTION double neighbourSum( const double* a, const double* x,
     return edgeRow( a, x, n, nx1, ny1, false );
 }
 
+//! Sum over the unknowns of s of term(n), n the unknown's flat index (one
+//! reduction; term may also write that unknown's entries).
+template <class ExecSpace, class Term>
+double sumOverUnknowns( const char* label, const ExecSpace& exec,
+                        const NodeStencilSystem<ExecSpace>& s,
+                        const Term& term )
+{
+    const auto nodes = unmanaged( s.nodes );
+    double sum = 0.0;
+    Kokkos::parallel_reduce(
+        label, Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
+        KOKKOS_LAMBDA( const int m, double& acc ) {
+            acc += term( nodes( m ) );
+        },
+        sum );
+    return sum;
+}
+
 //! Sum over the unknowns of u v.
 template <class ExecSpace, class NodeView>
 double dotOverNodes( const ExecSpace& exec,
                      const NodeStencilSystem<ExecSpace>& s, const NodeView& u,
                      const NodeView& v )
 {
-    const auto nodes = unmanaged( s.nodes );
     const auto uu = unmanaged( u );
     const auto vu = unmanaged( v );
     const int ny1 = static_cast<int>( u.extent( 1 ) );
-    double sum = 0.0;
-    Kokkos::parallel_reduce(
-        "cg_dot", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m, double& acc ) {
-            const int n = nodes( m );
-            acc += uu( n / ny1, n % ny1 ) * vu( n / ny1, n % ny1 );
-        },
-        sum );
-    return sum;
+    return sumOverUnknowns(
+        "cg_dot", exec, s, KOKKOS_LAMBDA( const int n ) {
+            return uu( n / ny1, n % ny1 ) * vu( n / ny1, n % ny1 );
+        } );
 }
 
 //! Sum over the unknowns of |u|.
@@ -167,18 +179,12 @@ double absSumOverNodes( const ExecSpace& exec,
                         const NodeStencilSystem<ExecSpace>& s,
                         const NodeView& u )
 {
-    const auto nodes = unmanaged( s.nodes );
     const auto uu = unmanaged( u );
     const int ny1 = static_cast<int>( u.extent( 1 ) );
-    double sum = 0.0;
-    Kokkos::parallel_reduce(
-        "cg_abs_sum", Kokkos::RangePolicy<ExecSpace>( exec, 0, s.num_nodes ),
-        KOKKOS_LAMBDA( const int m, double& acc ) {
-            const int n = nodes( m );
-            acc += Kokkos::Experimental::fabs( uu( n / ny1, n % ny1 ) );
-        },
-        sum );
-    return sum;
+    return sumOverUnknowns(
+        "cg_abs_sum", exec, s, KOKKOS_LAMBDA( const int n ) {
+            return Kokkos::Experimental::fabs( uu( n / ny1, n % ny1 ) );
+        } );
 }
 } // namespace Impl
 

@@ -107,6 +107,34 @@ TEST( MohrCoulomb, elastic_trial_is_unchanged )
     EXPECT_EQ( eps, 0.005 );
 }
 
+// The elastic check's major and minor principal stresses are the sorted
+// principal values' first and last, bit for bit, whichever place s_zz takes
+// (above, between and below the in-plane pair, and tied with one), and a
+// NaN trial is not elastic.
+TEST( MohrCoulomb, principal_extremes_are_the_sorted_values_ends )
+{
+    namespace Impl = mpm::physics::Impl;
+    const double in_plane[3] = { -50.0e3, -60.0e3, 3.0e3 };
+    const double center = 0.5 * ( in_plane[0] + in_plane[1] );
+    const double radius =
+        std::sqrt( 25.0e6 + in_plane[2] * in_plane[2] ); // (5 kPa, 3 kPa)
+    for ( const double s_zz :
+          { -40.0e3, -55.0e3, -70.0e3, center + radius, center - radius } )
+    {
+        const double s[4] = { in_plane[0], in_plane[1], in_plane[2], s_zz };
+        const Impl::PrincipalExtremes extremes = Impl::principalExtremes( s );
+        const Impl::PrincipalStress sorted = Impl::principalStress( s );
+        const auto reference = mpm_test::principal( s );
+        EXPECT_EQ( extremes.major, sorted.sigma[0] ) << "s_zz " << s_zz;
+        EXPECT_EQ( extremes.minor, sorted.sigma[2] ) << "s_zz " << s_zz;
+        EXPECT_NEAR( extremes.major, reference[0], 1e-9 ) << "s_zz " << s_zz;
+        EXPECT_NEAR( extremes.minor, reference[2], 1e-9 ) << "s_zz " << s_zz;
+    }
+    const auto m = testParams();
+    double s[4] = { std::nan( "" ), -60.0e3, 3.0e3, -55.0e3 }, eps = 0.0;
+    EXPECT_NE( MohrCoulomb{}.returnMap( m, s, eps ), ReturnRegion::Elastic );
+}
+
 // Flow de_p = dgamma (1 + sin psi, 0, -(1 - sin psi)) in (1, 2, 3): the
 // closest point in the energy norm.
 TEST( MohrCoulomb, main_plane_return_lies_on_surface )

@@ -1,6 +1,7 @@
 #include <mpm_pressure_operator.hpp>
 #include <mpm_pressure_terms.hpp>
 #include <mpm_test_backends.hpp>
+#include <mpm_test_pressure_terms.hpp>
 
 #include <gtest/gtest.h>
 
@@ -52,12 +53,8 @@ TYPED_TEST( PressureOperator, gauss_points_give_the_five_point_stencil )
     Kokkos::deep_copy( water_points.S_p, 1.0 );
     Kokkos::deep_copy( water_points.p_w_condition_p, -1 );
 
-    mpm::PressurePointTerms<exec_space> terms( grid );
-    const auto no_source = KOKKOS_LAMBDA( const int ) { return 0.0; };
-    mpm::pressurePointTerms( exec_space(), points, water_points, nodes,
-                             water_nodes, mpm::physics::WaterParams{},
-                             no_source, terms );
-    mpm::takePressureCellTerms( exec_space(), grid, terms );
+    const auto terms = mpm_test::pressureTermsWithoutSource(
+        grid, points, water_points, nodes, water_nodes );
     auto g_h =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), terms.g_c );
     for ( int k = 0; k < 4; ++k )

@@ -1,5 +1,6 @@
 #include <mpm_pressure_terms.hpp>
 #include <mpm_test_backends.hpp>
+#include <mpm_test_pressure_terms.hpp>
 
 #include <gtest/gtest.h>
 
@@ -59,12 +60,8 @@ double rightSide( const double lower_dv, const double upper_dv )
     Kokkos::deep_copy( water_nodes.v_w_i, v_h );
     Kokkos::deep_copy( water_nodes.dv_w_i, v_h );
 
-    mpm::PressurePointTerms<exec_space> terms( grid );
-    const auto no_source = KOKKOS_LAMBDA( const int ) { return 0.0; };
-    mpm::pressurePointTerms( exec_space(), points, water_points, nodes,
-                             water_nodes, mpm::physics::WaterParams{},
-                             no_source, terms );
-    mpm::takePressureCellTerms( exec_space(), grid, terms );
+    const auto terms = mpm_test::pressureTermsWithoutSource(
+        grid, points, water_points, nodes, water_nodes );
     auto b_h =
         Kokkos::create_mirror_view_and_copy( Kokkos::HostSpace(), terms.b_c );
     return b_h( 1, 1 ) / vol;

@@ -73,17 +73,20 @@ struct MohrCoulomb
                                                    double s[4],
                                                    double& eps_p_bar ) const
     {
-        // Trial principal stresses and yield checks (NaN: not elastic).
-        const Impl::PrincipalStress p = Impl::principalStress( s );
-        const double* sigma_tr = p.sigma;
+        // Yield checks on the trial's major and minor principal stresses
+        // (NaN: not elastic); its principal axes only if it yields.
+        const Impl::PrincipalExtremes trial = Impl::principalExtremes( s );
         const double c_n = cohesion( m, eps_p_bar );
-        const bool shear = !( Impl::yieldPrincipal( sigma_tr, c_n, m.sin_phi,
-                                                    m.cos_phi ) <= 0.0 );
+        const bool shear =
+            !( Impl::yieldPrincipal( trial.major, trial.minor, c_n, m.sin_phi,
+                                     m.cos_phi ) <= 0.0 );
         const bool tension =
             m.tension_cutoff &&
-            !( sigma_tr[0] <= Impl::tensileStrength( m, c_n ) );
+            !( trial.major <= Impl::tensileStrength( m, c_n ) );
         if ( !shear && !tension )
             return ReturnRegion::Elastic;
+        const Impl::PrincipalStress p = Impl::principalStress( s );
+        const double* sigma_tr = p.sigma;
 
         double sigma[3];
         double eps_p_bar_new = eps_p_bar;

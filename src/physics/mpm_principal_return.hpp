@@ -82,15 +82,28 @@ struct PrincipalStress
     double sin_2theta; //!< sin(2 theta)
 };
 
+//! The in-plane Mohr circle of s = {xx, yy, xy, zz}.
+struct MohrCircle
+{
+    double center;    //!< (s_xx + s_yy) / 2
+    double half_diff; //!< (s_xx - s_yy) / 2
+    double radius;    //!< sqrt(half_diff^2 + s_xy^2)
+};
+
+KOKKOS_INLINE_FUNCTION MohrCircle mohrCircle( const double s[4] )
+{
+    const double half_diff = 0.5 * ( s[0] - s[1] );
+    // sqrt, not hypot: stresses are far from overflow, and hypot is slow.
+    return {
+        0.5 * ( s[0] + s[1] ), half_diff,
+        Kokkos::Experimental::sqrt( half_diff * half_diff + s[2] * s[2] ) };
+}
+
 //! In-plane values from the 2x2 problem (Mohr circle), sorted with s_zz.
 KOKKOS_INLINE_FUNCTION PrincipalStress principalStress( const double s[4] )
 {
     PrincipalStress p;
-    const double center = 0.5 * ( s[0] + s[1] );
-    const double half_diff = 0.5 * ( s[0] - s[1] );
-    // sqrt, not hypot: stresses are far from overflow, and hypot is slow.
-    const double radius =
-        Kokkos::Experimental::sqrt( half_diff * half_diff + s[2] * s[2] );
+    const auto [center, half_diff, radius] = mohrCircle( s );
     p.cos_2theta = radius > 0.0 ? half_diff / radius : 1.0;
     p.sin_2theta = radius > 0.0 ? s[2] / radius : 0.0;
     const double in_plane[3] = { center + radius, center - radius, s[3] };
@@ -115,6 +128,25 @@ KOKKOS_INLINE_FUNCTION PrincipalStress principalStress( const double s[4] )
     return p;
 }
 
+//! The major and minor principal stresses of s (s_zz included).
+struct PrincipalExtremes
+{
+    double major; //!< sigma_1
+    double minor; //!< sigma_3
+};
+
+//! principalStress's sigma[0] and sigma[2] (the same expressions, so the
+//! same values, NaN included) without the axes or the sort: all a yield
+//! check needs.
+KOKKOS_INLINE_FUNCTION PrincipalExtremes principalExtremes( const double s[4] )
+{
+    const MohrCircle circle = mohrCircle( s );
+    const double in_plane_major = circle.center + circle.radius;
+    const double in_plane_minor = circle.center - circle.radius;
+    return { s[3] > in_plane_major ? s[3] : in_plane_major,
+             s[3] > in_plane_minor ? in_plane_minor : s[3] };
+}
+
 //! Rotate new principal values back to {xx, yy, xy, zz} with the trial axes.
 KOKKOS_INLINE_FUNCTION void fromPrincipal( const PrincipalStress& p,
                                            const double sigma[3], double s[4] )
@@ -130,14 +162,22 @@ KOKKOS_INLINE_FUNCTION void fromPrincipal( const PrincipalStress& p,
     s[3] = by_slot[2];
 }
 
-//! f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi) for sorted s1 >= s3.
+//! f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi) for s1 >= s3.
+KOKKOS_INLINE_FUNCTION double yieldPrincipal( const double s1, const double s3,
+                                              const double c,
+                                              const double sin_phi,
+                                              const double cos_phi )
+{
+    return ( s1 - s3 ) + ( s1 + s3 ) * sin_phi - 2.0 * c * cos_phi;
+}
+
+//! yieldPrincipal of sorted principal stresses sigma[0] >= sigma[2].
 KOKKOS_INLINE_FUNCTION double yieldPrincipal( const double sigma[3],
                                               const double c,
                                               const double sin_phi,
                                               const double cos_phi )
 {
-    return ( sigma[0] - sigma[2] ) + ( sigma[0] + sigma[2] ) * sin_phi -
-           2.0 * c * cos_phi;
+    return yieldPrincipal( sigma[0], sigma[2], c, sin_phi, cos_phi );
 }
 
 //! Gradient of face f_ij (i major, j minor): v_i = 1 + sin, v_j = -(1 - sin).

@@ -86,7 +86,6 @@ class PressureProjection
         , _mu_i( "pressure_mu_i", grid.nx + 1, grid.ny + 1 )
         , _system( grid.nx - 1, grid.ny - 1, grid.nx * grid.ny )
         , _work( grid.nx - 1, grid.ny - 1 )
-        , _forces( "pressure_forces", grid.numNodes() )
         , _newton( "pressure_newton", grid.nx * grid.ny )
         , _k_diagonal_c( "pressure_k_diagonal_c", grid.nx, grid.ny )
         , _residual_c( "pressure_residual_c", grid.nx, grid.ny )
@@ -140,8 +139,7 @@ class PressureProjection
             _stats.max_newton_residual =
                 std::max( _stats.max_newton_residual, residual );
         }
-        scatterPressureForces( exec, pv, wv, grid, _dp_c, _forces );
-        correctNodalVelocities( exec, gv, wg, _forces, dt, water.density,
+        correctNodalVelocities( exec, gv, wg, _terms, _dp_c, dt, water.density,
                                 water.viscosity, inertia_scaling,
                                 inflow_flux_i );
         ++_stats.solves;
@@ -294,7 +292,6 @@ class PressureProjection
     Kokkos::View<double** [2], DeviceType<ExecSpace>> _mu_i;
     NodeStencilSystem<ExecSpace> _system;
     CgWorkspace<ExecSpace> _work;
-    PressureForceSums<ExecSpace> _forces;
     NewtonSums<ExecSpace> _newton;
     cell_view _dp_c, _k_diagonal_c, _residual_c, _e_c;
     CgReport _last;
