@@ -312,7 +312,7 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
   \brief The water balance of a base cell's empty part, from the step's
   remapped nodal velocities: its outflow int (div q + S div v_s) dV =
   sum_k (q_k + S_bar v_s,k) . D_k over the corners (q_k = nS_k (v_w,k -
-  v_s,k), nodal nS = m_w / (rho_w vol); D_k from
+  v_s,k), nodal nS = m_w / (rho_w vol), WaterGridViews::nS_i; D_k from
   physics::BaseCellCompletion), per unit volume of the cell's soil, into
   rate_c. The soil's points add it to their water volume rate
   (BaseCellAccess::extraRate): the empty part, completed in the momentum
@@ -323,8 +323,7 @@ void baseCellForces( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
 template <class ExecSpace>
 void baseCellRates( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                     const GridViews<ExecSpace>& gv,
-                    const WaterGridViews<ExecSpace>& wg,
-                    const double water_density )
+                    const WaterGridViews<ExecSpace>& wg )
 {
     if ( !cells.active() )
         return;
@@ -357,11 +356,7 @@ void baseCellRates( const ExecSpace& exec_space, BaseCells<ExecSpace>& cells,
                 double D[2];
                 completion.missing( k, m0, force_c( ci, cj, K::vol_xi ),
                                     force_c( ci, cj, K::vol_eta ), D );
-                const double nS =
-                    water_nodes.m_w_i( i, j ) > 0.0
-                        ? water_nodes.m_w_i( i, j ) /
-                              ( water_density * water_nodes.vol_i( i, j ) )
-                        : 0.0;
+                const double nS = water_nodes.nS_i( i, j );
                 for ( int d = 0; d < 2; ++d )
                     outflow += ( nS * ( water_nodes.v_w_i( i, j, d ) -
                                         nodes.v_i( i, j, d ) ) +

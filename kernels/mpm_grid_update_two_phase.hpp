@@ -76,6 +76,9 @@ void gridUpdateTwoPhase(
             nodes.m_i( i, j ) = m_s;
             water_nodes.m_w_i( i, j ) = m_w;
             water_nodes.vol_i( i, j ) = vol;
+            water_nodes.nS_i( i, j ) =
+                m_w > 0.0 ? physics::waterFraction( m_w, vol, water_density )
+                          : 0.0;
             water_nodes.q_i( i, j ) = q;
             // Nodes touched with zero weight only carry no mass.
             if ( !( m_s > 0.0 ) )

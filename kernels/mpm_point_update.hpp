@@ -140,7 +140,9 @@ PointUpdateReport updatePoints(
   `bbar`, the gradient of velocityGradientCellSums with the cell-averaged
   volumetric rates (cellAverageVolumetricRate, and the cell average of the
   water divergence). A point of a base cell adds the water its cell's
-  empty part passes on (BaseCellAccess::extraRate).
+  empty part passes on (BaseCellAccess::extraRate). Without `water_rate`
+  (the semi-implicit step, whose pressure solve took the predictor's rate
+  r*) r is not formed: water_rate stays 0 and div_v_w_p unchanged.
 */
 template <class ExecSpace>
 struct StepVelocityGradient
@@ -150,13 +152,12 @@ struct StepVelocityGradient
     using gv_type = GridViews<ExecSpace>;
     using wg_type = WaterGridViews<ExecSpace>;
     bool bbar;
-    bool two_phase;
-    double water_density;
+    bool form_water_rate; //!< two-phase, and r is needed
     BaseCellAccess<ExecSpace> base;
     physics::GridGeometry grid;
     UnmanagedView<typename gv_type::vector_view> v_s_i;
     UnmanagedView<typename wg_type::vector_view> v_w_i;
-    UnmanagedView<typename wg_type::scalar_view> m_w_i, vol_i, div_w_c;
+    UnmanagedView<typename wg_type::scalar_view> nS_i, div_w_c;
     UnmanagedView<typename gv_type::scalar_view> vol_c, dvol_c;
     UnmanagedView<typename pv_type::vector_view> x_p;
     UnmanagedView<typename pv_type::gradient_view> grad_v_p;
@@ -166,17 +167,16 @@ struct StepVelocityGradient
                           const WaterParticleViews<ExecSpace>& wv,
                           const GridViews<ExecSpace>& gv,
                           const WaterGridViews<ExecSpace>& wg,
-                          const double density_w, const bool cell_average,
-                          const BaseCellAccess<ExecSpace>& base_cells )
+                          const bool cell_average,
+                          const BaseCellAccess<ExecSpace>& base_cells,
+                          const bool water_rate = true )
         : bbar( cell_average )
-        , two_phase( wv.allocated() )
-        , water_density( density_w )
+        , form_water_rate( wv.allocated() && water_rate )
         , base( base_cells )
         , grid( gv.geometry )
         , v_s_i( gv.v_i )
         , v_w_i( wg.v_w_i )
-        , m_w_i( wg.m_w_i )
-        , vol_i( wg.vol_i )
+        , nS_i( wg.nS_i )
         , div_w_c( wg.div_w_c )
         , vol_c( gv.vol_c )
         , dvol_c( gv.dvol_c )
@@ -199,12 +199,12 @@ struct StepVelocityGradient
             for ( int a = 0; a < 2; ++a )
                 for ( int b = 0; b < 2; ++b )
                     L[a][b] = grad_v_p( p, a, b );
-            if ( two_phase )
+            if ( form_water_rate )
                 div_v_w = div_v_w_p( p );
             int ci, cj;
             if ( !grid.cellOf( x_p( p, 0 ), x_p( p, 1 ), ci, cj ) )
             {
-                if ( two_phase )
+                if ( form_water_rate )
                     water_rate = physics::waterVolumeRate( n_p( p ), S_p( p ),
                                                            div_v_w, L );
                 return;
@@ -212,7 +212,7 @@ struct StepVelocityGradient
             cellAverageVolumetricRate( ci, cj, vol_c, dvol_c, L );
             grad_v_p( p, 0, 0 ) = L[0][0];
             grad_v_p( p, 1, 1 ) = L[1][1];
-            if ( two_phase )
+            if ( form_water_rate )
             {
                 div_v_w = div_w_c( ci, cj ) / vol_c( ci, cj );
                 div_v_w_p( p ) = div_v_w;
@@ -229,10 +229,9 @@ struct StepVelocityGradient
         for ( int a = 0; a < 2; ++a )
             for ( int b = 0; b < 2; ++b )
                 grad_v_p( p, a, b ) = L[a][b];
-        if ( two_phase )
+        if ( form_water_rate )
         {
-            div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i,
-                                         m_w_i, vol_i, water_density,
+            div_v_w = waterDivergenceAt( ci, cj, dwdx, dwdy, v_s_i, v_w_i, nS_i,
                                          n_p( p ) * S_p( p ), L );
             div_v_w_p( p ) = div_v_w;
             water_rate =
@@ -281,7 +280,7 @@ PointUpdateReport updatePointsDry( const ExecSpace& exec_space,
     const WaterParticleViews<ExecSpace> no_water;
     const DryStateUpdate<ExecSpace> update_states{
         StepVelocityGradient<ExecSpace>(
-            pv, no_water, gv, WaterGridViews<ExecSpace>(), 0.0, bbar,
+            pv, no_water, gv, WaterGridViews<ExecSpace>(), bbar,
             BaseCellAccess<ExecSpace>( BaseCells<ExecSpace>(), gv.geometry ) ),
         StressPointUpdate<ExecSpace>( pv, dt ) };
     const DryWaveSpeed<ExecSpace> wave_speed( pv );
@@ -340,8 +339,8 @@ PointUpdateReport updatePointsTwoPhase(
     const bool skeleton = false )
 {
     const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
-        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, water.density, bbar,
-                                         base ),
+        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, bbar, base,
+                                         !pore_pressure.projected ),
         pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
     const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water, skeleton );
     return updatePoints<PorePressureUpdate::lanes>(

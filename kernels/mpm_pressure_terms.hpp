@@ -180,8 +180,7 @@ void pressurePointTerms(
             double L[2][2];
             gradientAt( ci, cj, dwdx, dwdy, v_s, L );
             const double div_v_w = waterDivergenceAt(
-                ci, cj, dwdx, dwdy, v_s, v_w, water_nodes.m_w_i,
-                water_nodes.vol_i, water.density, n * S, L );
+                ci, cj, dwdx, dwdy, v_s, v_w, water_nodes.nS_i, n * S, L );
             const double rate = physics::waterVolumeRate( n, S, div_v_w, L );
             access.add( cell, C::rhs, vol * ( source( p ) - rate ) );
             access.add( cell, C::storage,

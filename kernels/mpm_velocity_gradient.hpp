@@ -37,7 +37,7 @@ gradientAt( const int ci, const int cj, const double dwdx[4],
 /*!
   \brief Water divergence of one point for the water balance (Eq. 8), from
   the divergence of the relative flux nS (v_w - v_s) interpolated from the
-  nodes (nodal nS = m_w / (rho_w vol)):
+  nodes (nodal nS_i = m_w / (rho_w vol), WaterGridViews::nS_i):
   div v_w = div( nS (v_w - v_s) ) / (nS)_p + div v_s. Then
   nS div v_w + (1 - n) S div v_s = div q + S div v_s is conservative: the
   flux leaving one point enters its neighbours, also across a wetting
@@ -49,8 +49,7 @@ template <class ScalarView, class VectorView>
 KOKKOS_INLINE_FUNCTION double
 waterDivergenceAt( const int ci, const int cj, const double dwdx[4],
                    const double dwdy[4], const VectorView& v_s_i,
-                   const VectorView& v_w_i, const ScalarView& m_w_i,
-                   const ScalarView& vol_i, const double water_density,
+                   const VectorView& v_w_i, const ScalarView& nS_i,
                    const double nS_p, const double L[2][2] )
 {
     double div_q = 0.0;
@@ -58,11 +57,11 @@ waterDivergenceAt( const int ci, const int cj, const double dwdx[4],
     {
         const int i = ci + ( k & 1 );
         const int j = cj + ( k >> 1 );
-        if ( !( m_w_i( i, j ) > 0.0 ) )
+        const double nS = nS_i( i, j );
+        if ( !( nS > 0.0 ) )
             continue;
-        const double nS_i = m_w_i( i, j ) / ( water_density * vol_i( i, j ) );
-        div_q += nS_i * ( ( v_w_i( i, j, 0 ) - v_s_i( i, j, 0 ) ) * dwdx[k] +
-                          ( v_w_i( i, j, 1 ) - v_s_i( i, j, 1 ) ) * dwdy[k] );
+        div_q += nS * ( ( v_w_i( i, j, 0 ) - v_s_i( i, j, 0 ) ) * dwdx[k] +
+                        ( v_w_i( i, j, 1 ) - v_s_i( i, j, 1 ) ) * dwdy[k] );
     }
     return ( nS_p > 0.0 ? div_q / nS_p : 0.0 ) + L[0][0] + L[1][1];
 }
@@ -98,7 +97,7 @@ template <class ExecSpace, class Duplication>
 void velocityGradientCellSums(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
-    const WaterGridViews<ExecSpace>& wg, const double water_density,
+    const WaterGridViews<ExecSpace>& wg,
     const GridScatter<ExecSpace, CellField::count, Duplication>& scatter )
 {
     const auto sums = scatter.handle();
@@ -123,7 +122,7 @@ void velocityGradientCellSums(
             {
                 div_v_w = waterDivergenceAt(
                     ci, cj, dwdx, dwdy, nodes.v_i, water_nodes.v_w_i,
-                    water_nodes.m_w_i, water_nodes.vol_i, water_density,
+                    water_nodes.nS_i,
                     water_points.n_p( p ) * water_points.S_p( p ), L );
                 water_points.div_v_w_p( p ) = div_v_w;
             }

@@ -52,6 +52,7 @@ TYPED_TEST( PressureIncrementForces, cell_sums_give_the_point_sums )
     Kokkos::deep_copy( nodes.m_i, 50.0 );
     Kokkos::deep_copy( water_nodes.m_w_i, 10.0 );
     Kokkos::deep_copy( water_nodes.vol_i, 0.03 );
+    Kokkos::deep_copy( water_nodes.nS_i, 10.0 / ( 1000.0 * 0.03 ) );
     auto x_h = Kokkos::create_mirror_view( points.x_p );
     auto vol_h = Kokkos::create_mirror_view( points.vol_p );
     auto S_h = Kokkos::create_mirror_view( water_points.S_p );

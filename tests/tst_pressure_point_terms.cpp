@@ -43,6 +43,7 @@ double rightSide( const double lower_dv, const double upper_dv )
     auto v_h = Kokkos::create_mirror_view( nodes.v_i );
     auto m_w_h = Kokkos::create_mirror_view( water_nodes.m_w_i );
     auto vol_h = Kokkos::create_mirror_view( water_nodes.vol_i );
+    auto nS_h = Kokkos::create_mirror_view( water_nodes.nS_i );
     for ( int a = 0; a < 2; ++a )
         for ( int b = 0; b < 2; ++b )
         {
@@ -50,6 +51,7 @@ double rightSide( const double lower_dv, const double upper_dv )
             m_h( 1 + a, 1 + b ) = w * m_p;
             m_w_h( 1 + a, 1 + b ) = w * 0.3 * vol * 1000.0;
             vol_h( 1 + a, 1 + b ) = w * vol;
+            nS_h( 1 + a, 1 + b ) = w > 0.0 ? 0.3 : 0.0;
             v_h( 1 + a, 1 + b, 1 ) = b ? upper_dv : lower_dv;
         }
     Kokkos::deep_copy( nodes.m_i, m_h );
@@ -57,6 +59,7 @@ double rightSide( const double lower_dv, const double upper_dv )
     Kokkos::deep_copy( nodes.dv_i, v_h );
     Kokkos::deep_copy( water_nodes.m_w_i, m_w_h );
     Kokkos::deep_copy( water_nodes.vol_i, vol_h );
+    Kokkos::deep_copy( water_nodes.nS_i, nS_h );
     Kokkos::deep_copy( water_nodes.v_w_i, v_h );
     Kokkos::deep_copy( water_nodes.dv_w_i, v_h );
 

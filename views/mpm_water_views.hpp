@@ -22,13 +22,15 @@ struct WaterParticleViews
     using vector_view = Kokkos::View<double* [2], device_type, MemoryTraits>;
     using int_view = Kokkos::View<int*, device_type, MemoryTraits>;
 
-    scalar_view p_w_p;     //!< pore-water pressure, Pa
-    scalar_view S_p;       //!< degree of saturation
-    scalar_view dS_dp_p;   //!< dS/dp_w, 1/Pa
-    scalar_view k_rel_p;   //!< relative permeability
-    scalar_view n_p;       //!< porosity
-    vector_view v_w_p;     //!< water velocity, m/s
-    scalar_view div_v_w_p; //!< divergence of the water velocity, 1/s
+    scalar_view p_w_p;   //!< pore-water pressure, Pa
+    scalar_view S_p;     //!< degree of saturation
+    scalar_view dS_dp_p; //!< dS/dp_w, 1/Pa
+    scalar_view k_rel_p; //!< relative permeability
+    scalar_view n_p;     //!< porosity
+    vector_view v_w_p;   //!< water velocity, m/s
+    //! Divergence of the water velocity, 1/s (the explicit step's; the
+    //! semi-implicit step does not form it).
+    scalar_view div_v_w_p;
     //! Index of the prescribed pore-pressure condition, -1 if free.
     int_view p_w_condition_p;
     //! Index of the water inflow feeding the point, -1 if none.
@@ -86,8 +88,11 @@ struct WaterGridViews
     using vector_view = Kokkos::View<double** [2], device_type, MemoryTraits>;
     using int_view = Kokkos::View<int**, device_type, MemoryTraits>;
 
-    scalar_view m_w_i;  //!< water mass sum N n S rho_w V, kg
-    scalar_view vol_i;  //!< mixture volume sum N V, m^3
+    scalar_view m_w_i; //!< water mass sum N n S rho_w V, kg
+    scalar_view vol_i; //!< mixture volume sum N V, m^3
+    //! Water volume fraction n S = m_w / (rho_w vol), 0 without water
+    //! (set with m_w_i: the points' water divergence reads it).
+    scalar_view nS_i;
     vector_view mv_w_i; //!< water momentum, kg m/s
     //! Water force per unit water volume fraction, sum N rho_w V g +
     //! sum p_w grad N V (N); times the nodal n S it is the water force.
@@ -123,6 +128,7 @@ struct WaterGridViews
     {
         f( "m_w_i", wg.m_w_i... );
         f( "vol_i", wg.vol_i... );
+        f( "nS_i", wg.nS_i... );
         f( "mv_w_i", wg.mv_w_i... );
         f( "f_w_i", wg.f_w_i... );
         f( "q_i", wg.q_i... );

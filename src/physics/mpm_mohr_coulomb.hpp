@@ -23,9 +23,9 @@ KOKKOS_INLINE_FUNCTION double yieldFunction( const MaterialParams& m,
                                              const double s[4],
                                              const double eps_p_bar )
 {
-    const Impl::PrincipalStress p = Impl::principalStress( s );
-    return Impl::yieldPrincipal( p.sigma, cohesion( m, eps_p_bar ), m.sin_phi,
-                                 m.cos_phi );
+    const Impl::PrincipalExtremes p = Impl::principalExtremes( s );
+    return Impl::yieldPrincipal( p.major, p.minor, cohesion( m, eps_p_bar ),
+                                 m.sin_phi, m.cos_phi );
 }
 
 //---------------------------------------------------------------------------//

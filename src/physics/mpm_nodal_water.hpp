@@ -48,6 +48,14 @@ KOKKOS_INLINE_FUNCTION double nodalDrag( const double nS,
     return nS * nS * viscosity * volume * volume / permeability_volume;
 }
 
+//! Water volume fraction n S = m_w / (rho_w V) of a node of water mass m_w
+//! (kg) and volume vol (m^3).
+KOKKOS_INLINE_FUNCTION double waterFraction( const double m_w, const double vol,
+                                             const double water_density )
+{
+    return m_w / ( water_density * vol );
+}
+
 //! The water state of a node for its momentum balance (Eqs. 9-10).
 struct NodalWater
 {
@@ -63,7 +71,7 @@ KOKKOS_INLINE_FUNCTION NodalWater nodalWater( const double m_w,
                                               const double water_density,
                                               const double viscosity )
 {
-    const double nS = m_w / ( water_density * vol );
+    const double nS = waterFraction( m_w, vol, water_density );
     // Zero permeability (k_rel = 0) locks the water to the solid.
     const bool locked = !( q > 0.0 );
     return { nS, locked, locked ? 0.0 : nodalDrag( nS, viscosity, vol, q ) };

@@ -39,9 +39,22 @@ struct SaturationState
 */
 struct Retention
 {
-    //! \brief S (-), dS/dp_w (1/Pa) and k_rel (-) at pore pressure p_w (Pa).
-    KOKKOS_INLINE_FUNCTION RetentionState operator()( const RetentionParams& r,
-                                                      const double p_w ) const
+    /*!
+      \brief S (-), dS/dp_w (1/Pa) and k_rel (-) at pore pressure p_w (Pa).
+      Inline only the table's cubics (the step's hot path: every point,
+      every Newton iteration); any other law or suction through law().
+    */
+    KOKKOS_FORCEINLINE_FUNCTION RetentionState
+    operator()( const RetentionParams& r, const double p_w ) const
+    {
+        double t;
+        const int i = tableInterval( r, p_w, t );
+        return i >= 0 ? tableState( r, i, t ) : law( r, p_w );
+    }
+
+    //! operator() without the table's inline path.
+    KOKKOS_INLINE_FUNCTION RetentionState law( const RetentionParams& r,
+                                               const double p_w ) const
     {
         switch ( r.model )
         {
@@ -63,8 +76,20 @@ struct Retention
       operator() without the cost of k_rel (van Genuchten: an expm1 and a
       sqrt; Liakopoulos: an exp).
     */
-    KOKKOS_INLINE_FUNCTION SaturationState
+    KOKKOS_FORCEINLINE_FUNCTION SaturationState
     saturationState( const RetentionParams& r, const double p_w ) const
+    {
+        double t;
+        const int i = tableInterval( r, p_w, t );
+        if ( i < 0 )
+            return lawSaturation( r, p_w );
+        return SaturationState{ RetentionTable::value( r.table, i, 0, t ),
+                                RetentionTable::value( r.table, i, 1, t ) };
+    }
+
+    //! saturationState without the table's inline path.
+    KOKKOS_INLINE_FUNCTION SaturationState
+    lawSaturation( const RetentionParams& r, const double p_w ) const
     {
         switch ( r.model )
         {
@@ -202,11 +227,26 @@ struct Retention
     KOKKOS_INLINE_FUNCTION RetentionState tabulated( const RetentionParams& r,
                                                      const double p_w ) const
     {
-        const double s = p_w < 0.0 ? -p_w : 0.0;
         double t;
-        const int i = RetentionTable::interval( s, t );
-        if ( i < 0 )
-            return vanGenuchten( r, p_w );
+        const int i = RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t );
+        return i >= 0 ? tableState( r, i, t ) : vanGenuchten( r, p_w );
+    }
+
+    //! The table interval of p_w (RetentionTable::interval of the suction)
+    //! and the position t in it; -1 if r has no table or p_w lies outside.
+    KOKKOS_FORCEINLINE_FUNCTION static int
+    tableInterval( const RetentionParams& r, const double p_w, double& t )
+    {
+        if ( r.model != RetentionModel::VanGenuchten || !r.table )
+            return -1;
+        return RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t );
+    }
+
+    //! The table's S, dS/dp_w and k_rel (floored at k_rel_min) at
+    //! position t of interval i.
+    KOKKOS_FORCEINLINE_FUNCTION static RetentionState
+    tableState( const RetentionParams& r, const int i, const double t )
+    {
         const double k_rel = RetentionTable::value( r.table, i, 2, t );
         return RetentionState{ RetentionTable::value( r.table, i, 0, t ),
                                RetentionTable::value( r.table, i, 1, t ),

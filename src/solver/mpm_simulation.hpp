@@ -343,7 +343,7 @@ class Simulation
             _cell_sums = CellSums<ExecSpace>(
                 "bbar_cells", grid.geometry.nx * grid.geometry.ny );
         velocityGradientCellSums( exec, particles, water_particles, grid,
-                                  water_grid, water.density, _cell_sums );
+                                  water_grid, _cell_sums );
         takeCellSums( exec, grid, water_grid, _cell_sums );
     }
 
@@ -425,7 +425,7 @@ class Simulation
                 water, solver.inertia_scaling, _two_phase_momentum );
             remapVelocityTwoPhase( exec, grid, water_grid, _two_phase_momentum,
                                    conditions.inflow_flux_i, water.density );
-            baseCellRates( exec, _base_cells, grid, water_grid, water.density );
+            baseCellRates( exec, _base_cells, grid, water_grid );
         }
         else
             _dry_step.gatherAndRemap( exec, particles, grid, dt,
