@@ -47,9 +47,8 @@ struct Retention
     KOKKOS_FORCEINLINE_FUNCTION RetentionState
     operator()( const RetentionParams& r, const double p_w ) const
     {
-        double t;
-        const int i = tableInterval( r, p_w, t );
-        return i >= 0 ? tableState( r, i, t ) : law( r, p_w );
+        RetentionState state;
+        return tableState( r, p_w, state ) ? state : law( r, p_w );
     }
 
     //! operator() without the table's inline path.
@@ -79,12 +78,11 @@ struct Retention
     KOKKOS_FORCEINLINE_FUNCTION SaturationState
     saturationState( const RetentionParams& r, const double p_w ) const
     {
-        double t;
-        const int i = tableInterval( r, p_w, t );
-        if ( i < 0 )
-            return lawSaturation( r, p_w );
-        return SaturationState{ RetentionTable::value( r.table, i, 0, t ),
-                                RetentionTable::value( r.table, i, 1, t ) };
+        // Inlined, the unused k_rel cubic is dropped.
+        RetentionState state;
+        if ( tableState( r, p_w, state ) )
+            return SaturationState{ state.S, state.dS_dp };
+        return lawSaturation( r, p_w );
     }
 
     //! saturationState without the table's inline path.
@@ -227,30 +225,36 @@ struct Retention
     KOKKOS_INLINE_FUNCTION RetentionState tabulated( const RetentionParams& r,
                                                      const double p_w ) const
     {
-        double t;
-        const int i = RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t );
-        return i >= 0 ? tableState( r, i, t ) : vanGenuchten( r, p_w );
+        RetentionState state;
+        return tableState( r, p_w, state ) ? state : vanGenuchten( r, p_w );
     }
 
-    //! The table interval of p_w (RetentionTable::interval of the suction)
-    //! and the position t in it; -1 if r has no table or p_w lies outside.
-    KOKKOS_FORCEINLINE_FUNCTION static int
-    tableInterval( const RetentionParams& r, const double p_w, double& t )
+    /*!
+      \brief The tabulated van Genuchten law at p_w into `state`: saturated
+      (p_w >= 0, as vanGenuchten: S = s_sat, dS/dp_w = 0, k_rel = 1) or
+      the table's cubics, k_rel floored at k_rel_min. False (state
+      untouched) if r has no table or the suction lies outside it.
+    */
+    KOKKOS_FORCEINLINE_FUNCTION static bool
+    tableState( const RetentionParams& r, const double p_w,
+                RetentionState& state )
     {
         if ( r.model != RetentionModel::VanGenuchten || !r.table )
-            return -1;
-        return RetentionTable::interval( p_w < 0.0 ? -p_w : 0.0, t );
-    }
-
-    //! The table's S, dS/dp_w and k_rel (floored at k_rel_min) at
-    //! position t of interval i.
-    KOKKOS_FORCEINLINE_FUNCTION static RetentionState
-    tableState( const RetentionParams& r, const int i, const double t )
-    {
+            return false;
+        if ( !( p_w < 0.0 ) )
+        {
+            state = RetentionState{ r.s_sat, 0.0, 1.0 };
+            return true;
+        }
+        double t;
+        const int i = RetentionTable::interval( -p_w, t );
+        if ( i < 0 )
+            return false;
         const double k_rel = RetentionTable::value( r.table, i, 2, t );
-        return RetentionState{ RetentionTable::value( r.table, i, 0, t ),
-                               RetentionTable::value( r.table, i, 1, t ),
-                               k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+        state = RetentionState{ RetentionTable::value( r.table, i, 0, t ),
+                                RetentionTable::value( r.table, i, 1, t ),
+                                k_rel > r.k_rel_min ? k_rel : r.k_rel_min };
+        return true;
     }
 
     //! S and dS/dp_w of van Genuchten and the terms k_rel needs.
