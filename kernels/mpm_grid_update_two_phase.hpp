@@ -76,9 +76,10 @@ void gridUpdateTwoPhase(
             nodes.m_i( i, j ) = m_s;
             water_nodes.m_w_i( i, j ) = m_w;
             water_nodes.vol_i( i, j ) = vol;
-            water_nodes.nS_i( i, j ) =
+            const double nS =
                 m_w > 0.0 ? physics::waterFraction( m_w, vol, water_density )
                           : 0.0;
+            water_nodes.nS_i( i, j ) = nS;
             water_nodes.q_i( i, j ) = q;
             // Nodes touched with zero weight only carry no mass.
             if ( !( m_s > 0.0 ) )
@@ -86,8 +87,8 @@ void gridUpdateTwoPhase(
 
             const int flags = nodes.flags_i( i, j );
             const int flags_w = water_nodes.flags_w_i( i, j );
-            const physics::NodalWater water = physics::nodalWater(
-                m_w, vol, q, water_density, water_viscosity );
+            const physics::NodalWater water =
+                physics::nodalWaterOfFraction( nS, vol, q, water_viscosity );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;

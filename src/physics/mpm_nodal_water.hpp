@@ -64,6 +64,18 @@ struct NodalWater
     double drag; //!< drag coefficient Q, kg/s (nodalDrag; 0 if locked)
 };
 
+//! NodalWater of a node of water fraction nS (waterFraction), volume vol
+//! (m^3) and permeability sum q = sum N k k_rel V (m^4).
+KOKKOS_INLINE_FUNCTION NodalWater nodalWaterOfFraction( const double nS,
+                                                        const double vol,
+                                                        const double q,
+                                                        const double viscosity )
+{
+    // Zero permeability (k_rel = 0) locks the water to the solid.
+    const bool locked = !( q > 0.0 );
+    return { nS, locked, locked ? 0.0 : nodalDrag( nS, viscosity, vol, q ) };
+}
+
 //! NodalWater of a node of water mass m_w (kg), volume vol (m^3) and
 //! permeability sum q = sum N k k_rel V (m^4).
 KOKKOS_INLINE_FUNCTION NodalWater nodalWater( const double m_w,
@@ -71,10 +83,8 @@ KOKKOS_INLINE_FUNCTION NodalWater nodalWater( const double m_w,
                                               const double water_density,
                                               const double viscosity )
 {
-    const double nS = waterFraction( m_w, vol, water_density );
-    // Zero permeability (k_rel = 0) locks the water to the solid.
-    const bool locked = !( q > 0.0 );
-    return { nS, locked, locked ? 0.0 : nodalDrag( nS, viscosity, vol, q ) };
+    return nodalWaterOfFraction( waterFraction( m_w, vol, water_density ), vol,
+                                 q, viscosity );
 }
 
 /*!

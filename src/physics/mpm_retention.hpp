@@ -51,14 +51,14 @@ struct Retention
         return tableState( r, p_w, state ) ? state : law( r, p_w );
     }
 
-    //! operator() without the table's inline path.
+    //! The exact law (a table's fallback outside its range, see tableState).
     KOKKOS_INLINE_FUNCTION RetentionState law( const RetentionParams& r,
                                                const double p_w ) const
     {
         switch ( r.model )
         {
         case RetentionModel::VanGenuchten:
-            return r.table ? tabulated( r, p_w ) : vanGenuchten( r, p_w );
+            return vanGenuchten( r, p_w );
         case RetentionModel::Liakopoulos:
             return liakopoulos( r, p_w );
         case RetentionModel::Gardner:
@@ -85,20 +85,14 @@ struct Retention
         return lawSaturation( r, p_w );
     }
 
-    //! saturationState without the table's inline path.
+    //! saturationState of the exact law (as law()).
     KOKKOS_INLINE_FUNCTION SaturationState
     lawSaturation( const RetentionParams& r, const double p_w ) const
     {
         switch ( r.model )
         {
         case RetentionModel::VanGenuchten:
-        {
-            if ( !r.table )
-                return vanGenuchtenSaturation( r, p_w ).state;
-            // Inlined, the unused k_rel cubic is dropped.
-            const RetentionState state = tabulated( r, p_w );
-            return SaturationState{ state.S, state.dS_dp };
-        }
+            return vanGenuchtenSaturation( r, p_w ).state;
         case RetentionModel::Liakopoulos:
             return liakopoulosSaturation( r, p_w ).state;
         case RetentionModel::Gardner:
