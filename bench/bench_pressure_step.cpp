@@ -30,6 +30,7 @@ struct SlopeAfterRain
     std::unique_ptr<mpm::Simulation<ExecSpace>> sim;
     double dt = 0.0;
     mpm::PressurePointTerms<ExecSpace> terms;
+    mpm::CellPointLists<ExecSpace> lists;
 
     //! Leaves `sim` null (and the benchmark skipped) if the case cannot be
     //! read.
@@ -49,19 +50,20 @@ struct SlopeAfterRain
         for ( int k = 0; k < 5; ++k )
             sim->advance( dt, step.settings );
         terms = mpm::PressurePointTerms<ExecSpace>( sim->grid.geometry );
+        lists = mpm::CellPointLists<ExecSpace>( sim->particles.size(),
+                                                sim->grid.geometry.nx *
+                                                    sim->grid.geometry.ny );
         takePointTerms();
         ExecSpace().fence();
     }
 
-    //! pressurePointTerms (no inflow source) and their cell sums.
+    //! pressurePointTerms (no inflow source): node and cell sums.
     void takePointTerms()
     {
         const auto no_source = KOKKOS_LAMBDA( const int ) { return 0.0; };
-        const ExecSpace space;
-        mpm::pressurePointTerms( space, sim->particles, sim->water_particles,
-                                 sim->grid, sim->water_grid, sim->water,
-                                 no_source, terms );
-        mpm::takePressureCellTerms( space, sim->grid.geometry, terms );
+        mpm::pressurePointTerms(
+            ExecSpace(), sim->particles, sim->water_particles, sim->grid,
+            sim->water_grid, sim->water, no_source, lists, terms );
     }
 
     void report( benchmark::State& state ) const

@@ -1,6 +1,7 @@
 #ifndef MPM_PRESSURE_TERMS_HPP
 #define MPM_PRESSURE_TERMS_HPP
 
+#include <mpm_cell_point_lists.hpp>
 #include <mpm_grid_scatter.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_node_loop.hpp>
@@ -27,9 +28,8 @@ struct PressureCellField
         rhs,      //!< sum V (source - r*), m^3/s
         storage,  //!< sum V C, m^3/Pa
         grad_0_x, //!< G: sum V dN_k/dx_d, node k = 0..3, m (8 fields)
-        grad_S_0_x = grad_0_x + 8,    //!< G_S: sum S V dN_k/dx_d, m
-        free_points = grad_S_0_x + 8, //!< number of points with a free p_w
-        count
+        grad_S_0_x = grad_0_x + 8, //!< G_S: sum S V dN_k/dx_d, m
+        count = grad_S_0_x + 8
     };
 };
 
@@ -50,15 +50,15 @@ struct PressureNodeField
   each of its 4 nodes (G, the nodal water forces of a unit pressure
   increment of the cell's free points per unit water fraction), g_S_c
   (the same weighted by each point's S: the mixture forces, Bishop's
-  share) and the number of free points free_c; per
-  node the volume and saturation sums (the nodal S of the mobility).
+  share) and the number of free points free_c, over the cells with points
+  (touched_c, in index order; every other cell holds zeros); per node the
+  volume and saturation sums (the nodal S of the mobility).
 */
 template <class ExecSpace>
 struct PressurePointTerms
 {
     using device_type = DeviceType<ExecSpace>;
     using cell_view = Kokkos::View<double**, device_type>;
-    GridScatter<ExecSpace, PressureCellField::count> cell_sums;
     GridScatter<ExecSpace, PressureNodeField::count> node_sums;
     Kokkos::View<int*, device_type> touched_c; //!< cells with points
     int num_touched = 0;
@@ -69,8 +69,7 @@ struct PressurePointTerms
 
     PressurePointTerms() = default;
     explicit PressurePointTerms( const physics::GridGeometry& grid )
-        : cell_sums( "pressure_cell_terms", grid.nx * grid.ny )
-        , node_sums( "pressure_node_terms", grid.numNodes() )
+        : node_sums( "pressure_node_terms", grid.numNodes() )
         , touched_c( "pressure_touched_c", grid.nx * grid.ny )
         , b_c( "pressure_b_c", grid.nx, grid.ny )
         , storage_c( "pressure_storage_c", grid.nx, grid.ny )
@@ -118,101 +117,63 @@ struct PredictorVelocity
 };
 
 //---------------------------------------------------------------------------//
-/*!
-  \brief The points' terms of the semi-implicit pressure equation
-  (docs/formulation.md §9, item 3), from the predictor's nodal velocities
-  (gv.v_i, wg.v_w_i after gridUpdateTwoPhase; PredictorVelocity at a node
-  below 1 % of the point's mass), summed per cell over its points with a
-  free p_w: the right side V (source - r*), r* = div q* + S div v_s* the
-  predictor's water volume rate (waterDivergenceAt, waterVolumeRate), the
-  storage V C (physics::waterStorage) and the gradients V grad N of the
-  cell's 4 nodes; per node, over every point, N V and N V S. Consumed by
-  takePressureCellTerms and pressureNodeMobility.
-  `source(q)` is point q's Eq. 8 inflow source, 1/s.
-*/
-template <class ExecSpace, class Source>
-void pressurePointTerms(
-    const ExecSpace& exec, const ParticleViews<ExecSpace>& pv,
-    const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
-    const WaterGridViews<ExecSpace>& wg, const physics::WaterParams& water,
-    const Source& source, PressurePointTerms<ExecSpace>& t )
+//! The node sums of the pressure equation (PressureNodeField), over every
+//! active point: N V and N V S (a scatter; pressureNodeMobility takes them).
+template <class ExecSpace>
+void pressureNodeTerms( const ExecSpace& exec,
+                        const ParticleViews<ExecSpace>& pv,
+                        const WaterParticleViews<ExecSpace>& wv,
+                        const physics::GridGeometry& grid,
+                        PressurePointTerms<ExecSpace>& t )
 {
-    using C = PressureCellField;
     using N = PressureNodeField;
-    const auto cell_sums = t.cell_sums.handle();
     const auto node_sums = t.node_sums.handle();
     const auto points = unmanaged( pv );
     const auto water_points = unmanaged( wv );
-    const auto nodes = unmanaged( gv );
-    const auto water_nodes = unmanaged( wg );
-    const physics::GridGeometry grid = gv.geometry;
-    // Below this share of a point's mass a node gives r* its start-of-step
-    // velocity (PredictorVelocity).
-    const double predictor_mass_share = 0.01;
     forEachPointStencil(
-        "mpm::pressure_point_terms", exec, pv, grid,
+        "mpm::pressure_node_terms", exec, pv, grid,
         KOKKOS_LAMBDA( const int p, const PointStencil& stencil ) {
-            const auto& [ci, cj, w, dwdx, dwdy] = stencil;
-            const double n = water_points.n_p( p );
-            const double S = water_points.S_p( p );
             const double vol = points.vol_p( p );
-            {
-                auto access = node_sums.access();
-                for ( int k = 0; k < 4; ++k )
-                {
-                    const int node =
-                        nodeIndex( ci + k % 2, cj + k / 2, grid.ny + 1 );
-                    access.add( node, N::volume, w[k] * vol );
-                    access.add( node, N::saturation, w[k] * vol * S );
-                }
-            }
-            const int cell = ci * grid.ny + cj;
-            auto access = cell_sums.access();
-            access.touch( cell );
-            if ( water_points.p_w_condition_p( p ) >= 0 )
-                return;
-            const double min_mass = predictor_mass_share * points.m_p( p );
-            using Velocity =
-                PredictorVelocity<decltype( nodes.v_i ), decltype( nodes.m_i )>;
-            const Velocity v_s{ nodes.v_i, nodes.dv_i, nodes.m_i, min_mass };
-            const Velocity v_w{ water_nodes.v_w_i, water_nodes.dv_w_i,
-                                nodes.m_i, min_mass };
-            double L[2][2];
-            gradientAt( ci, cj, dwdx, dwdy, v_s, L );
-            const double div_v_w = waterDivergenceAt(
-                ci, cj, dwdx, dwdy, v_s, v_w, water_nodes.nS_i, n * S, L );
-            const double rate = physics::waterVolumeRate( n, S, div_v_w, L );
-            access.add( cell, C::rhs, vol * ( source( p ) - rate ) );
-            access.add( cell, C::storage,
-                        vol * physics::waterStorage( n, S,
-                                                     water_points.dS_dp_p( p ),
-                                                     water.bulk_modulus ) );
+            const double S = water_points.S_p( p );
+            auto access = node_sums.access();
             for ( int k = 0; k < 4; ++k )
             {
-                access.add( cell, C::grad_0_x + 2 * k, vol * dwdx[k] );
-                access.add( cell, C::grad_0_x + 2 * k + 1, vol * dwdy[k] );
-                access.add( cell, C::grad_S_0_x + 2 * k, S * vol * dwdx[k] );
-                access.add( cell, C::grad_S_0_x + 2 * k + 1,
-                            S * vol * dwdy[k] );
+                const int node = nodeIndex( stencil.ci + k % 2,
+                                            stencil.cj + k / 2, grid.ny + 1 );
+                access.add( node, N::volume, stencil.w[k] * vol );
+                access.add( node, N::saturation, stencil.w[k] * vol * S );
             }
-            access.add( cell, C::free_points, 1.0 );
         } );
 }
 
 //---------------------------------------------------------------------------//
 /*!
-  \brief Takes the cells' sums (pressurePointTerms) into b_c, storage_c,
-  g_c, g_S_c and free_c: first zeros the cells the last call took, then lists
-  the cells with points now (touched_c) and takes theirs, so every other cell
-  holds zeros.
+  \brief The cell sums of the pressure equation (PressurePointTerms' b_c,
+  storage_c, g_c, g_S_c, free_c), gathered cell by cell over the free points
+  of `lists` (current: listCellPoints), in index order: no copies to sum,
+  the same sums on any number of threads. Per point: the right side
+  V (source - r*), r* = div q* + S div v_s* the predictor's water volume
+  rate (waterDivergenceAt, waterVolumeRate; PredictorVelocity below 1 % of
+  the point's mass), the storage V C (physics::waterStorage), the
+  gradients V grad N of the cell's 4 nodes and the same times S. The cells
+  the last call filled that hold no points now are zeroed.
 */
-template <class ExecSpace>
-void takePressureCellTerms( const ExecSpace& exec,
-                            const physics::GridGeometry& grid,
-                            PressurePointTerms<ExecSpace>& t )
+template <class ExecSpace, class Source>
+void pressureCellTerms( const ExecSpace& exec,
+                        const ParticleViews<ExecSpace>& pv,
+                        const WaterParticleViews<ExecSpace>& wv,
+                        const GridViews<ExecSpace>& gv,
+                        const WaterGridViews<ExecSpace>& wg,
+                        const physics::WaterParams& water, const Source& source,
+                        const CellPointLists<ExecSpace>& lists,
+                        PressurePointTerms<ExecSpace>& t )
 {
-    using F = PressureCellField;
-    const auto sums = t.cell_sums.handle();
+    using C = PressureCellField;
+    const auto points = unmanaged( pv );
+    const auto water_points = unmanaged( wv );
+    const auto nodes = unmanaged( gv );
+    const auto water_nodes = unmanaged( wg );
+    const physics::GridGeometry grid = gv.geometry;
     const auto touched = unmanaged( t.touched_c );
     const auto b = unmanaged( t.b_c );
     const auto storage = unmanaged( t.storage_c );
@@ -220,29 +181,112 @@ void takePressureCellTerms( const ExecSpace& exec,
     const auto g_S = unmanaged( t.g_S_c );
     const auto free_points = unmanaged( t.free_c );
     const int ny = grid.ny;
-    // take: from the sums (true) or zeros (false).
-    const auto assign = [&]( const char* label, const bool take )
+    const auto occupied = unmanaged( lists.occupied );
+    const auto offset_c = unmanaged( lists.offset_c );
+    const auto points_c = unmanaged( lists.points_c );
+    // Below this share of a point's mass a node gives r* its start-of-step
+    // velocity (PredictorVelocity).
+    const double predictor_mass_share = 0.01;
+    const int num_before = t.num_touched, num_now = lists.num_occupied;
+    const auto empty = KOKKOS_LAMBDA( const int c )
     {
-        Kokkos::parallel_for(
-            label, Kokkos::RangePolicy<ExecSpace>( exec, 0, t.num_touched ),
-            KOKKOS_LAMBDA( const int m ) {
-                const int c = touched( m ), i = c / ny, j = c % ny;
-                const auto value = [&]( const int field )
-                { return take ? sums.take( c, field ) : 0.0; };
-                b( i, j ) = value( F::rhs );
-                storage( i, j ) = value( F::storage );
-                for ( int f = 0; f < 8; ++f )
-                {
-                    g( i, j, f ) = value( F::grad_0_x + f );
-                    g_S( i, j, f ) = value( F::grad_S_0_x + f );
-                }
-                free_points( i, j ) =
-                    static_cast<int>( value( F::free_points ) );
-            } );
+        return offset_c( c + 1 ) == offset_c( c );
     };
-    assign( "mpm::pressure_cell_terms_clear", false );
-    t.num_touched = t.cell_sums.listTouched( exec, t.touched_c );
-    assign( "mpm::pressure_cell_terms", true );
+    // Cell (i, j) takes `sums` (PressureCellField) of `count` free points.
+    const auto store = KOKKOS_LAMBDA( const int i, const int j,
+                                      const double sums[], const int count )
+    {
+        b( i, j ) = sums[C::rhs];
+        storage( i, j ) = sums[C::storage];
+        for ( int f = 0; f < 8; ++f )
+        {
+            g( i, j, f ) = sums[C::grad_0_x + f];
+            g_S( i, j, f ) = sums[C::grad_S_0_x + f];
+        }
+        free_points( i, j ) = count;
+    };
+    // Index m zeroes the m-th cell of the last call if it is empty now, then
+    // fills the m-th cell with points and lists it there (touched_c).
+    Kokkos::parallel_for(
+        "mpm::pressure_cell_terms",
+        Kokkos::RangePolicy<ExecSpace, Kokkos::Schedule<Kokkos::Static>>(
+            exec, 0, num_before > num_now ? num_before : num_now ),
+        KOKKOS_LAMBDA( const int m ) {
+            double sums[C::count] = {};
+            if ( m < num_before && empty( touched( m ) ) )
+                store( touched( m ) / ny, touched( m ) % ny, sums, 0 );
+            if ( m >= num_now )
+                return;
+            const int c = occupied( m ), ci = c / ny, cj = c % ny;
+            touched( m ) = c;
+            int count = 0;
+            // The points with a free p_w come first.
+            for ( int a = offset_c( c ); a < offset_c( c + 1 ); ++a )
+            {
+                const int p = points_c( a );
+                if ( water_points.p_w_condition_p( p ) >= 0 )
+                    break;
+                int i, j;
+                double w[4], dwdx[4], dwdy[4];
+                grid.weights( points.x_p( p, 0 ), points.x_p( p, 1 ), i, j, w,
+                              dwdx, dwdy );
+                const double n = water_points.n_p( p );
+                const double S = water_points.S_p( p );
+                const double vol = points.vol_p( p );
+                const double min_mass = predictor_mass_share * points.m_p( p );
+                using Velocity = PredictorVelocity<decltype( nodes.v_i ),
+                                                   decltype( nodes.m_i )>;
+                const Velocity v_s{ nodes.v_i, nodes.dv_i, nodes.m_i,
+                                    min_mass };
+                const Velocity v_w{ water_nodes.v_w_i, water_nodes.dv_w_i,
+                                    nodes.m_i, min_mass };
+                double L[2][2];
+                gradientAt( i, j, dwdx, dwdy, v_s, L );
+                const double div_v_w = waterDivergenceAt(
+                    i, j, dwdx, dwdy, v_s, v_w, water_nodes.nS_i, n * S, L );
+                const double rate =
+                    physics::waterVolumeRate( n, S, div_v_w, L );
+                sums[C::rhs] += vol * ( source( p ) - rate );
+                sums[C::storage] += vol * physics::waterStorage(
+                                              n, S, water_points.dS_dp_p( p ),
+                                              water.bulk_modulus );
+                for ( int k = 0; k < 4; ++k )
+                {
+                    sums[C::grad_0_x + 2 * k] += vol * dwdx[k];
+                    sums[C::grad_0_x + 2 * k + 1] += vol * dwdy[k];
+                    sums[C::grad_S_0_x + 2 * k] += S * vol * dwdx[k];
+                    sums[C::grad_S_0_x + 2 * k + 1] += S * vol * dwdy[k];
+                }
+                ++count;
+            }
+            store( ci, cj, sums, count );
+        } );
+    t.num_touched = num_now;
+}
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The points' terms of the semi-implicit pressure equation
+  (docs/formulation.md §9, item 3) from the predictor's nodal velocities
+  (gv.v_i, wg.v_w_i after gridUpdateTwoPhase): the node sums
+  (pressureNodeTerms) and, over `lists` brought up to date
+  (listCellPoints), the cell sums (pressureCellTerms). Consumed by
+  pressureNodeMobility and assemblePressureOperator. `source(q)` is point
+  q's Eq. 8 inflow source, 1/s.
+*/
+template <class ExecSpace, class Source>
+void pressurePointTerms( const ExecSpace& exec,
+                         const ParticleViews<ExecSpace>& pv,
+                         const WaterParticleViews<ExecSpace>& wv,
+                         const GridViews<ExecSpace>& gv,
+                         const WaterGridViews<ExecSpace>& wg,
+                         const physics::WaterParams& water,
+                         const Source& source, CellPointLists<ExecSpace>& lists,
+                         PressurePointTerms<ExecSpace>& t )
+{
+    pressureNodeTerms( exec, pv, wv, gv.geometry, t );
+    listCellPoints( exec, pv, wv, gv.geometry, lists );
+    pressureCellTerms( exec, pv, wv, gv, wg, water, source, lists, t );
 }
 
 } // namespace mpm

@@ -54,22 +54,14 @@ TYPED_TEST( PressureIncrementForces, cell_sums_give_the_point_sums )
     Kokkos::deep_copy( water_nodes.vol_i, 0.03 );
     Kokkos::deep_copy( water_nodes.nS_i, 10.0 / ( 1000.0 * 0.03 ) );
     auto x_h = Kokkos::create_mirror_view( points.x_p );
-    auto vol_h = Kokkos::create_mirror_view( points.vol_p );
-    auto S_h = Kokkos::create_mirror_view( water_points.S_p );
-    auto condition_h =
-        Kokkos::create_mirror_view( water_points.p_w_condition_p );
     for ( int p = 0; p < num_points; ++p )
     {
         x_h( p, 0 ) = grid.x0 + gx[p] * grid.h;
         x_h( p, 1 ) = grid.y0 + gy[p] * grid.h;
-        vol_h( p ) = vol[p];
-        S_h( p ) = S[p];
-        condition_h( p ) = condition[p];
     }
     Kokkos::deep_copy( points.x_p, x_h );
-    Kokkos::deep_copy( points.vol_p, vol_h );
-    Kokkos::deep_copy( water_points.S_p, S_h );
-    Kokkos::deep_copy( water_points.p_w_condition_p, condition_h );
+    mpm_test::setPointWater( points, water_points, num_points, vol, S,
+                             condition );
 
     const auto terms = mpm_test::pressureTermsWithoutSource(
         grid, points, water_points, nodes, water_nodes );

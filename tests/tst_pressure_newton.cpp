@@ -125,9 +125,9 @@ struct NewtonProblem
         mpm::GridViews<ExecSpace> nodes( grid );
         mpm::WaterGridViews<ExecSpace> water_nodes( grid );
         const auto no_source = KOKKOS_LAMBDA( const int ) { return 0.0; };
+        mpm::CellPointLists<ExecSpace> lists( points.size(), nx * ny );
         mpm::pressurePointTerms( ExecSpace(), points, water_points, nodes,
-                                 water_nodes, water, no_source, terms );
-        mpm::takePressureCellTerms( ExecSpace(), grid, terms );
+                                 water_nodes, water, no_source, lists, terms );
 
         auto a_h = Kokkos::create_mirror_view( system.a );
         auto nodes_h = Kokkos::create_mirror_view( system.nodes );

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace
 {
 MPM_TEST_BACKEND_SUITE( PressurePointTerms );
@@ -85,6 +87,121 @@ TYPED_TEST( PressurePointTerms,
     // 2,000 1/s to r*.
     EXPECT_NEAR( rightSide<TypeParam>( -1.0, 1.0e3 ), -2.0, 1e-9 );
     EXPECT_NEAR( rightSide<TypeParam>( 0.0, 1.0e3 ), 0.0, 1e-9 );
+}
+
+// The cells' sums gathered over each cell's points (pressurePointTerms with
+// CellPointLists): nodes at rest, so only the storage, the gradient sums
+// and the count of free points are nonzero. Four points on a 4 x 4 grid of
+// 0.5 m cells: two free ones in cell (1, 1), a prescribed one there too
+// (left out of every sum), a free one in cell (2, 2). The sums must equal
+// those formed here point by point; after the last point moves to cell
+// (0, 2) a second call must zero cell (2, 2) and fill cell (0, 2).
+TYPED_TEST( PressurePointTerms,
+            cells_gather_their_free_points_and_clear_left_cells )
+{
+    using exec_space = TypeParam;
+    namespace ph = mpm::physics;
+    ph::GridGeometry grid;
+    grid.h = 0.5;
+    grid.nx = grid.ny = 4;
+    const int num_points = 4;
+    const double n = 0.3, dS_dp = 2.0e-5;
+    const double vol[num_points] = { 0.06, 0.07, 0.05, 0.065 };
+    const double S[num_points] = { 0.9, 0.6, 0.75, 0.8 };
+    const int condition[num_points] = { -1, -1, 0, -1 };
+    std::vector<double> x = { 0.6, 0.9, 0.7, 1.2 };
+    std::vector<double> y = { 0.55, 0.85, 0.6, 1.1 };
+    mpm::ParticleViews<exec_space> points( num_points );
+    mpm::WaterParticleViews<exec_space> water_points( num_points );
+    mpm::GridViews<exec_space> nodes( grid );
+    mpm::WaterGridViews<exec_space> water_nodes( grid );
+    Kokkos::deep_copy( points.status_p, mpm::point_active );
+    Kokkos::deep_copy( points.m_p, 100.0 );
+    Kokkos::deep_copy( water_points.n_p, n );
+    Kokkos::deep_copy( water_points.dS_dp_p, dS_dp );
+    mpm_test::setPointWater( points, water_points, num_points, vol, S,
+                             condition );
+
+    const ph::WaterParams water;
+    mpm::PressurePointTerms<exec_space> terms( grid );
+    mpm::CellPointLists<exec_space> lists( num_points, grid.nx * grid.ny );
+    const auto no_source = KOKKOS_LAMBDA( const int ) { return 0.0; };
+    const auto gather = [&]()
+    {
+        auto x_h = Kokkos::create_mirror_view( points.x_p );
+        for ( int p = 0; p < num_points; ++p )
+        {
+            x_h( p, 0 ) = x[p];
+            x_h( p, 1 ) = y[p];
+        }
+        Kokkos::deep_copy( points.x_p, x_h );
+        mpm::pressurePointTerms( exec_space(), points, water_points, nodes,
+                                 water_nodes, water, no_source, lists, terms );
+    };
+    // The sums of cell (ci, cj) formed here from its free points.
+    const auto expectCell = [&]( const int ci, const int cj )
+    {
+        double storage = 0.0, g[8] = {}, g_S[8] = {};
+        int count = 0;
+        for ( int p = 0; p < num_points; ++p )
+        {
+            int i, j;
+            double w[4], dwdx[4], dwdy[4];
+            grid.weights( x[p], y[p], i, j, w, dwdx, dwdy );
+            if ( i != ci || j != cj || condition[p] >= 0 )
+                continue;
+            storage +=
+                vol[p] * ph::waterStorage( n, S[p], dS_dp, water.bulk_modulus );
+            for ( int k = 0; k < 4; ++k )
+            {
+                g[2 * k] += vol[p] * dwdx[k];
+                g[2 * k + 1] += vol[p] * dwdy[k];
+                g_S[2 * k] += S[p] * vol[p] * dwdx[k];
+                g_S[2 * k + 1] += S[p] * vol[p] * dwdy[k];
+            }
+            ++count;
+        }
+        const auto storage_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), terms.storage_c );
+        const auto g_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), terms.g_c );
+        const auto g_S_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), terms.g_S_c );
+        const auto free_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), terms.free_c );
+        const auto b_h = Kokkos::create_mirror_view_and_copy(
+            Kokkos::HostSpace(), terms.b_c );
+        EXPECT_EQ( free_h( ci, cj ), count ) << ci << ", " << cj;
+        EXPECT_NEAR( storage_h( ci, cj ), storage, 1e-12 * storage + 1e-300 )
+            << ci << ", " << cj;
+        EXPECT_EQ( b_h( ci, cj ), 0.0 ) << ci << ", " << cj;
+        for ( int f = 0; f < 8; ++f )
+        {
+            EXPECT_NEAR( g_h( ci, cj, f ), g[f], 1e-14 ) << ci << ", " << cj;
+            EXPECT_NEAR( g_S_h( ci, cj, f ), g_S[f], 1e-14 )
+                << ci << ", " << cj;
+        }
+    };
+
+    gather();
+    EXPECT_EQ( terms.num_touched, 2 );
+    expectCell( 1, 1 );
+    expectCell( 2, 2 );
+    const auto storage_before = Kokkos::create_mirror_view_and_copy(
+        Kokkos::HostSpace(), terms.storage_c );
+    EXPECT_GT( storage_before( 2, 2 ), 0.0 );
+
+    x[3] = 0.2;
+    y[3] = 1.3;
+    gather();
+    EXPECT_EQ( terms.num_touched, 2 );
+    expectCell( 1, 1 );
+    expectCell( 0, 2 );
+    expectCell( 2, 2 ); // no points: zeros
+    const auto storage_after = Kokkos::create_mirror_view_and_copy(
+        Kokkos::HostSpace(), terms.storage_c );
+    EXPECT_EQ( storage_after( 2, 2 ), 0.0 );
+    EXPECT_GT( storage_after( 0, 2 ), 0.0 );
 }
 
 } // namespace

@@ -88,7 +88,10 @@ struct MohrCoulomb
         const Impl::PrincipalStress p = Impl::principalStress( s );
         const double* sigma_tr = p.sigma;
 
-        double sigma[3];
+        // Every path below sets sigma (a trial that is not elastic yields
+        // in shear or crosses the cut-off); the trial's values keep the
+        // compiler from warning that it may not.
+        double sigma[3] = { sigma_tr[0], sigma_tr[1], sigma_tr[2] };
         double eps_p_bar_new = eps_p_bar;
         ReturnRegion region = ReturnRegion::Elastic;
         if ( shear )

@@ -103,7 +103,8 @@ class PressureProjection
       \brief Solves the step's pressure increments and corrects the nodal
       velocities of both phases (gv.v_i, dv_i, wg.v_w_i, dv_w_i). The
       storage is nonlinear (unsaturated), so the increments are iterated by
-      Newton (solveNewton). Throws SimulationError, naming the step
+      Newton (solveNewton); the cells' terms are gathered over `lists`
+      (pressurePointTerms). Throws SimulationError, naming the step
       (`step`, at simulated time `time` s), if a linear solve stops at its
       iteration cap above its tolerance.
     */
@@ -115,13 +116,13 @@ class PressureProjection
         const physics::WaterParams& water, const bool saturated,
         const double inertia_scaling, const double dt, const Source& source,
         const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i,
-        const PressureSolveSettings& settings, const long step,
-        const double time )
+        const PressureSolveSettings& settings, CellPointLists<ExecSpace>& lists,
+        const long step, const double time )
     {
         const physics::GridGeometry& grid = gv.geometry;
         _dp_c = wg.dp_w_c;
-        pressurePointTerms( exec, pv, wv, gv, wg, water, source, _terms );
-        takePressureCellTerms( exec, grid, _terms );
+        pressurePointTerms( exec, pv, wv, gv, wg, water, source, lists,
+                            _terms );
         pressureNodeMobility( exec, gv, wg, _terms, dt, water.density,
                               water.viscosity, inertia_scaling, inflow_flux_i,
                               _mu_i );

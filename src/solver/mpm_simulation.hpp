@@ -104,7 +104,7 @@ class Simulation
                 TwoPhaseNodeSums<ExecSpace>( "p2g_two_phase", num_nodes );
             _two_phase_momentum =
                 TwoPhaseMomentumSums<ExecSpace>( "remap_two_phase", num_nodes );
-            if ( solver.cell_equilibrium )
+            if ( solver.cell_equilibrium || semiImplicit() )
                 _cell_lists = CellPointLists<ExecSpace>(
                     points.size(), grid.geometry.nx * grid.geometry.ny );
             if ( semiImplicit() )
@@ -491,7 +491,7 @@ class Simulation
             exec, particles, water_particles, grid, water_grid, materials,
             water, analysis == AnalysisType::Saturated, solver.inertia_scaling,
             dt, source, conditions.inflow_flux_i,
-            pressureSolveSettings( solver ), step + 1, time );
+            pressureSolveSettings( solver ), _cell_lists, step + 1, time );
         pore_pressure.projected = true;
         pore_pressure.dp_c = _projection.increments();
         pore_pressure.x_p = particles.x_p;
