@@ -90,10 +90,10 @@ void BM_pressureAssembly( benchmark::State& state )
     for ( auto _ : state )
     {
         slope.takePointTerms();
-        mpm::pressureNodeMobility(
-            space, sim.grid, sim.water_grid, slope.terms, slope.dt,
-            sim.water.density, sim.water.viscosity, sim.solver.inertia_scaling,
-            sim.conditions.inflow_flux_i, mu_i );
+        mpm::pressureNodeMobility( space, sim.grid, sim.water_grid, slope.terms,
+                                   slope.dt, sim.water.viscosity,
+                                   sim.solver.inertia_scaling,
+                                   sim.conditions.inflow_flux_i, mu_i );
         mpm::assemblePressureOperator( space, grid, slope.terms, mu_i, system );
         space.fence();
     }

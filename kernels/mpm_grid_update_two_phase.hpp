@@ -88,7 +88,7 @@ void gridUpdateTwoPhase(
             const int flags = nodes.flags_i( i, j );
             const int flags_w = water_nodes.flags_w_i( i, j );
             const physics::NodalWater water =
-                physics::nodalWaterOfFraction( nS, vol, q, water_viscosity );
+                physics::nodalWater( nS, vol, q, water_viscosity );
             for ( int d = 0; d < 2; ++d )
             {
                 const int bit = d == 0 ? node_fix_x : node_fix_y;

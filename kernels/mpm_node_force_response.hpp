@@ -38,19 +38,19 @@ struct NodeForceResponse
     }
 };
 
-//! The NodeForceResponse of node (i, j), a node with solid mass.
+//! The NodeForceResponse of node (i, j), a node with solid mass (its n S
+//! the grid update's, WaterGridViews::nS_i).
 template <class Nodes, class WaterNodes, class FluxView>
 KOKKOS_INLINE_FUNCTION NodeForceResponse nodeForceResponse(
     const Nodes& nodes, const WaterNodes& water_nodes, const FluxView& flux_i,
     const int i, const int j, const physics::TwoPhaseNodalUpdate& update,
-    const double water_density, const double water_viscosity )
+    const double water_viscosity )
 {
-    const double m_w = water_nodes.m_w_i( i, j );
     return { nodes.m_i( i, j ),
-             m_w,
-             physics::nodalWater( m_w, water_nodes.vol_i( i, j ),
-                                  water_nodes.q_i( i, j ), water_density,
-                                  water_viscosity ),
+             water_nodes.m_w_i( i, j ),
+             physics::nodalWater( water_nodes.nS_i( i, j ),
+                                  water_nodes.vol_i( i, j ),
+                                  water_nodes.q_i( i, j ), water_viscosity ),
              nodes.flags_i( i, j ),
              water_nodes.flags_w_i( i, j ),
              { flux_i( i, j, 0 ) != 0.0, flux_i( i, j, 1 ) != 0.0 },

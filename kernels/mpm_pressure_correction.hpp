@@ -61,8 +61,7 @@ void correctNodalVelocities(
     const ExecSpace& exec, GridViews<ExecSpace>& gv,
     WaterGridViews<ExecSpace>& wg, const PressurePointTerms<ExecSpace>& terms,
     const Kokkos::View<double**, DeviceType<ExecSpace>>& dp_c, const double dt,
-    const double water_density, const double water_viscosity,
-    const double inertia_scaling,
+    const double water_viscosity, const double inertia_scaling,
     const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i )
 {
     const auto nodes = unmanaged( gv );
@@ -80,9 +79,8 @@ void correctNodalVelocities(
                 return;
             double f_w[2], f_m[2];
             pressureIncrementForces( i, j, nx, ny, dp, g, g_S, f_w, f_m );
-            const NodeForceResponse node =
-                nodeForceResponse( nodes, water_nodes, flux_i, i, j, update,
-                                   water_density, water_viscosity );
+            const NodeForceResponse node = nodeForceResponse(
+                nodes, water_nodes, flux_i, i, j, update, water_viscosity );
             for ( int d = 0; d < 2; ++d )
             {
                 const auto r = node.along( d, f_m[d], node.water.nS * f_w[d] );

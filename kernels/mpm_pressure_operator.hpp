@@ -29,8 +29,7 @@ template <class ExecSpace>
 void pressureNodeMobility(
     const ExecSpace& exec, const GridViews<ExecSpace>& gv,
     const WaterGridViews<ExecSpace>& wg, const PressurePointTerms<ExecSpace>& t,
-    const double dt, const double water_density, const double water_viscosity,
-    const double inertia_scaling,
+    const double dt, const double water_viscosity, const double inertia_scaling,
     const Kokkos::View<double***, DeviceType<ExecSpace>>& inflow_flux_i,
     const Kokkos::View<double** [2], DeviceType<ExecSpace>>& mu_i )
 {
@@ -49,9 +48,8 @@ void pressureNodeMobility(
             mu( i, j, 0 ) = mu( i, j, 1 ) = 0.0;
             if ( !( nodes.m_i( i, j ) > 0.0 ) || !( volume > 0.0 ) )
                 return;
-            const NodeForceResponse node =
-                nodeForceResponse( nodes, water_nodes, flux_i, i, j, update,
-                                   water_density, water_viscosity );
+            const NodeForceResponse node = nodeForceResponse(
+                nodes, water_nodes, flux_i, i, j, update, water_viscosity );
             const double S = saturation / volume;
             const double nS = node.water.nS;
             for ( int d = 0; d < 2; ++d )

@@ -120,11 +120,13 @@ TEST( NodalWater, water_fraction_drag_and_lock )
 {
     // m_w = 50 kg in V = 0.25 m^3: n S = 0.2; q = k_bar V = 0.25e-12 m^4:
     // Q = 0.04 x 1e-3 x 0.0625 / 0.25e-12 = 1e7 kg/s.
-    const auto water = ph::nodalWater( 50.0, 0.25, 0.25e-12, 1000.0, 1.0e-3 );
+    const auto water = ph::nodalWater( ph::waterFraction( 50.0, 0.25, 1000.0 ),
+                                       0.25, 0.25e-12, 1.0e-3 );
     EXPECT_DOUBLE_EQ( water.nS, 0.2 );
     EXPECT_FALSE( water.locked );
     EXPECT_NEAR( water.drag, 1.0e7, 1e-6 );
-    const auto dry = ph::nodalWater( 50.0, 0.25, 0.0, 1000.0, 1.0e-3 );
+    const auto dry = ph::nodalWater( ph::waterFraction( 50.0, 0.25, 1000.0 ),
+                                     0.25, 0.0, 1.0e-3 );
     EXPECT_TRUE( dry.locked );
     EXPECT_EQ( dry.drag, 0.0 );
 }

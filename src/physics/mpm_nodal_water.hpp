@@ -66,25 +66,13 @@ struct NodalWater
 
 //! NodalWater of a node of water fraction nS (waterFraction), volume vol
 //! (m^3) and permeability sum q = sum N k k_rel V (m^4).
-KOKKOS_INLINE_FUNCTION NodalWater nodalWaterOfFraction( const double nS,
-                                                        const double vol,
-                                                        const double q,
-                                                        const double viscosity )
+KOKKOS_INLINE_FUNCTION NodalWater nodalWater( const double nS, const double vol,
+                                              const double q,
+                                              const double viscosity )
 {
     // Zero permeability (k_rel = 0) locks the water to the solid.
     const bool locked = !( q > 0.0 );
     return { nS, locked, locked ? 0.0 : nodalDrag( nS, viscosity, vol, q ) };
-}
-
-//! NodalWater of a node of water mass m_w (kg), volume vol (m^3) and
-//! permeability sum q = sum N k k_rel V (m^4).
-KOKKOS_INLINE_FUNCTION NodalWater nodalWater( const double m_w,
-                                              const double vol, const double q,
-                                              const double water_density,
-                                              const double viscosity )
-{
-    return nodalWaterOfFraction( waterFraction( m_w, vol, water_density ), vol,
-                                 q, viscosity );
 }
 
 /*!

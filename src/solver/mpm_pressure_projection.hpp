@@ -123,9 +123,8 @@ class PressureProjection
         _dp_c = wg.dp_w_c;
         pressurePointTerms( exec, pv, wv, gv, wg, water, source, lists,
                             _terms );
-        pressureNodeMobility( exec, gv, wg, _terms, dt, water.density,
-                              water.viscosity, inertia_scaling, inflow_flux_i,
-                              _mu_i );
+        pressureNodeMobility( exec, gv, wg, _terms, dt, water.viscosity,
+                              inertia_scaling, inflow_flux_i, _mu_i );
         assemblePressureOperator( exec, grid, _terms, _mu_i, _system );
         keepStartOnUnknowns( exec, grid );
         _last = CgReport{ 0, 0.0, 0.0, 0.0, true };
@@ -140,7 +139,7 @@ class PressureProjection
             _stats.max_newton_residual =
                 std::max( _stats.max_newton_residual, residual );
         }
-        correctNodalVelocities( exec, gv, wg, _terms, _dp_c, dt, water.density,
+        correctNodalVelocities( exec, gv, wg, _terms, _dp_c, dt,
                                 water.viscosity, inertia_scaling,
                                 inflow_flux_i );
         ++_stats.solves;
