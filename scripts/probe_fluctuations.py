@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+"""How much a run's probed points fluctuate: pore pressure and speed about
+their running means.
+
+For each probe of each run's probes.csv (rows every [probes] interval_s, set
+it to a fraction of a millisecond to see the explicit scheme's undrained
+ringing), over the rows of the last stage: the mean p_w, the RMS and the
+largest deviation of p_w from its running mean over --window-s (centred), the
+mean and RMS speed of the solid, and the growth of the equivalent plastic
+strain. A yielding point ratchets under fluctuations of its effective stress,
+so this is what docs/formulation.md §9 compares between the two schemes.
+
+  scripts/probe_fluctuations.py RUN [RUN ...] [--window-s 0.02] [--json]
+
+RUN is a run's output folder (holding probes.csv) or the CSV file itself.
+"""
+import argparse
+import csv
+import json
+import os
+import sys
+
+import numpy as np
+
+
+def read_probes(path):
+    """Rows of the last stage, per probe name: time, p_w, v_x, v_y, eps_p."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "probes.csv")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"error: {path}: no probe rows")
+    last_stage = rows[-1]["stage"]
+    series = {}
+    for r in rows:
+        if r["stage"] != last_stage:
+            continue
+        series.setdefault(r["name"], []).append(
+            (float(r["time_s"]), float(r["p_w_pa"]), float(r["v_x_m_per_s"]),
+             float(r["v_y_m_per_s"]), float(r["eps_p_bar"])))
+    return path, {k: np.array(v) for k, v in series.items()}
+
+
+def fluctuations(a, window_s):
+    """Statistics of one probe's rows (time, p_w, v_x, v_y, eps_p)."""
+    t, p_w, v, eps_p = a[:, 0], a[:, 1], a[:, 2:4], a[:, 4]
+    speed = np.hypot(v[:, 0], v[:, 1])
+    interval = np.median(np.diff(t)) if len(t) > 1 else window_s
+    width = max(1, int(round(window_s / interval))) | 1  # odd, centred
+    stats = {"rows": int(len(t)), "interval_s": float(interval),
+             "p_w_mean_pa": float(p_w.mean()),
+             "speed_mean_m_per_s": float(speed.mean()),
+             "eps_p_growth": float(eps_p[-1] - eps_p[0])}
+    stats["p_w_fluctuation_rms_pa"] = None
+    stats["p_w_fluctuation_max_pa"] = None
+    stats["velocity_fluctuation_rms_m_per_s"] = None
+    if len(t) > width:
+        p_w_dev = deviation(p_w, width)
+        v_dev = np.hypot(deviation(v[:, 0], width), deviation(v[:, 1], width))
+        stats["p_w_fluctuation_rms_pa"] = float(np.sqrt((p_w_dev ** 2).mean()))
+        stats["p_w_fluctuation_max_pa"] = float(np.abs(p_w_dev).max())
+        stats["velocity_fluctuation_rms_m_per_s"] = float(
+            np.sqrt((v_dev ** 2).mean()))
+    return stats
+
+
+def deviation(values, width):
+    """values minus their centred running mean over `width` rows (the rows
+    a full window covers)."""
+    mean = np.convolve(values, np.ones(width) / width, mode="valid")
+    return values[width // 2:len(values) - width // 2] - mean
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("runs", nargs="+")
+    parser.add_argument("--window-s", type=float, default=0.02,
+                        help="running-mean window, s (default 0.02)")
+    parser.add_argument("--json", action="store_true")
+    args = parser.parse_args()
+    if not args.window_s > 0:
+        sys.exit("error: --window-s must be > 0 s")
+    result = {}
+    for run in args.runs:
+        path, series = read_probes(run)
+        result[path] = {name: fluctuations(a, args.window_s)
+                        for name, a in series.items()}
+    if args.json:
+        print(json.dumps(result, indent=1))
+        return
+    print("| run | probe | rows | p_w mean kPa | p_w fluctuation RMS kPa | largest kPa"
+          " | speed mean mm/s | velocity fluctuation RMS mm/s | eps_p growth |")
+    print("|---|---|--:|--:|--:|--:|--:|--:|--:|")
+    for path, probes in result.items():
+        for name, s in probes.items():
+            rms = s["p_w_fluctuation_rms_pa"]
+            top = s["p_w_fluctuation_max_pa"]
+            v_rms = s["velocity_fluctuation_rms_m_per_s"]
+            print(f"| {path} | {name} | {s['rows']} | {s['p_w_mean_pa'] / 1e3:.2f}"
+                  f" | {'-' if rms is None else f'{rms / 1e3:.2f}'}"
+                  f" | {'-' if top is None else f'{top / 1e3:.2f}'}"
+                  f" | {s['speed_mean_m_per_s'] * 1e3:.2f}"
+                  f" | {'-' if v_rms is None else f'{v_rms * 1e3:.2f}'}"
+                  f" | {s['eps_p_growth']:.2e} |")
+
+
+if __name__ == "__main__":
+    main()
