@@ -1,14 +1,14 @@
 #!/usr/bin/python3
-"""How much a run's probed points fluctuate: pore pressure and speed about
+"""How much a run's probed points fluctuate: pore pressure and velocity about
 their running means.
 
 For each probe of each run's probes.csv (rows every [probes] interval_s, set
 it to a fraction of a millisecond to see the explicit scheme's undrained
 ringing), over the rows of the last stage: the mean p_w, the RMS and the
 largest deviation of p_w from its running mean over --window-s (centred), the
-mean and RMS speed of the solid, and the growth of the equivalent plastic
-strain. A yielding point ratchets under fluctuations of its effective stress,
-so this is what docs/formulation.md §9 compares between the two schemes.
+mean speed of the solid and the RMS of its velocity's deviation from the
+running mean, and the growth of the equivalent plastic strain
+(docs/speed-vs-error.md, session 34, compares the two schemes' toe with it).
 
   scripts/probe_fluctuations.py RUN [RUN ...] [--window-s 0.02] [--json]
 
@@ -22,13 +22,25 @@ import sys
 
 import numpy as np
 
+# The columns read, in the order of a row's values (without stage and name).
+COLUMNS = ("time_s", "stage", "name", "p_w_pa", "v_x_m_per_s", "v_y_m_per_s",
+           "eps_p_bar")
+
 
 def read_probes(path):
     """Rows of the last stage, per probe name: time, p_w, v_x, v_y, eps_p."""
     if os.path.isdir(path):
         path = os.path.join(path, "probes.csv")
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            missing = sorted(set(COLUMNS) - set(reader.fieldnames or []))
+            if missing:
+                sys.exit(f"error: {path}: not a probes.csv, no column(s) "
+                         f"{', '.join(missing)}")
+            rows = list(reader)
+    except OSError as e:
+        sys.exit(f"error: {path}: cannot read ({e.strerror})")
     if not rows:
         sys.exit(f"error: {path}: no probe rows")
     last_stage = rows[-1]["stage"]
@@ -36,9 +48,12 @@ def read_probes(path):
     for r in rows:
         if r["stage"] != last_stage:
             continue
-        series.setdefault(r["name"], []).append(
-            (float(r["time_s"]), float(r["p_w_pa"]), float(r["v_x_m_per_s"]),
-             float(r["v_y_m_per_s"]), float(r["eps_p_bar"])))
+        try:
+            values = tuple(float(r[c]) for c in COLUMNS if c not in ("stage", "name"))
+        except ValueError:
+            sys.exit(f"error: {path}: a row of probe {r['name']} at "
+                     f"time_s={r['time_s']} holds a value that is not a number")
+        series.setdefault(r["name"], []).append(values)
     return path, {k: np.array(v) for k, v in series.items()}
 
 

@@ -4,9 +4,8 @@ Probe "ringing" rings about a steady state: p_w = 10 kPa + 2 kPa sin(2 pi t /
 T) and v_x = 3 mm/s + 1 mm/s cos(2 pi t / T), T = 5.5 ms, sampled every 0.5 ms
 (11 rows a period) for 1 s of the last stage, its plastic strain growing by
 1e-3; a window of 3 periods (33 rows) holds its running mean at the steady
-state exactly; probe "steady"
-holds p_w = -5 kPa and v = (0, 2) mm/s. Rows of an earlier stage, far off
-both, must not count.
+state exactly. Probe "steady" holds p_w = -5 kPa and v = (0, 2) mm/s. Rows of
+an earlier stage, far off both, must not count.
 """
 import csv
 import json
@@ -110,6 +109,17 @@ class ProbeFluctuationsTest(unittest.TestCase):
         result = subprocess.run([PYTHON, SCRIPT, empty], capture_output=True, text=True)
         self.assertNotEqual(result.returncode, 0)
         self.assertIn("no probe rows", result.stderr)
+        missing = subprocess.run([PYTHON, SCRIPT, os.path.join(self.tmp.name, "none")],
+                                 capture_output=True, text=True)
+        self.assertNotEqual(missing.returncode, 0)
+        self.assertIn("cannot read", missing.stderr)
+        other = os.path.join(self.tmp.name, "other.csv")
+        with open(other, "w") as f:
+            f.write("time_s,stage,name\n1,rainfall,A\n")
+        result = subprocess.run([PYTHON, SCRIPT, other], capture_output=True, text=True)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("no column(s) eps_p_bar, p_w_pa", result.stderr)
+        self.assertNotIn("Traceback", result.stderr)
 
 
 if __name__ == "__main__":
