@@ -13,47 +13,37 @@ running mean, and the growth of the equivalent plastic strain
   scripts/probe_fluctuations.py RUN [RUN ...] [--window-s 0.02] [--json]
 
 RUN is a run's output folder (holding probes.csv) or the CSV file itself.
+Errors in the input give one line "probe_fluctuations: error: ..." and exit
+code 2.
 """
 import argparse
-import csv
 import json
 import os
 import sys
 
 import numpy as np
 
-# The columns read, in the order of a row's values (without stage and name).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from slope_run import InputError, read_probes, run_reporting_errors  # noqa: E402
+
+# The columns read, in the order of a probe's values (without stage and name).
 COLUMNS = ("time_s", "stage", "name", "p_w_pa", "v_x_m_per_s", "v_y_m_per_s",
            "eps_p_bar")
+VALUES = tuple(c for c in COLUMNS if c not in ("stage", "name"))
 
 
-def read_probes(path):
+def probe_series(path):
     """Rows of the last stage, per probe name: time, p_w, v_x, v_y, eps_p."""
     if os.path.isdir(path):
         path = os.path.join(path, "probes.csv")
-    try:
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            missing = sorted(set(COLUMNS) - set(reader.fieldnames or []))
-            if missing:
-                sys.exit(f"error: {path}: not a probes.csv, no column(s) "
-                         f"{', '.join(missing)}")
-            rows = list(reader)
-    except OSError as e:
-        sys.exit(f"error: {path}: cannot read ({e.strerror})")
+    rows = read_probes(path, COLUMNS)
     if not rows:
-        sys.exit(f"error: {path}: no probe rows")
+        raise InputError(f"{path}: no probe rows")
     last_stage = rows[-1]["stage"]
     series = {}
     for r in rows:
-        if r["stage"] != last_stage:
-            continue
-        try:
-            values = tuple(float(r[c]) for c in COLUMNS if c not in ("stage", "name"))
-        except ValueError:
-            sys.exit(f"error: {path}: a row of probe {r['name']} at "
-                     f"time_s={r['time_s']} holds a value that is not a number")
-        series.setdefault(r["name"], []).append(values)
+        if r["stage"] == last_stage:
+            series.setdefault(r["name"], []).append(tuple(r[c] for c in VALUES))
     return path, {k: np.array(v) for k, v in series.items()}
 
 
@@ -94,14 +84,23 @@ def main():
                         help="running-mean window, s (default 0.02)")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
-    if not args.window_s > 0:
-        sys.exit("error: --window-s must be > 0 s")
-    result = {}
-    for run in args.runs:
-        path, series = read_probes(run)
-        result[path] = {name: fluctuations(a, args.window_s)
-                        for name, a in series.items()}
-    if args.json:
+
+    def body():
+        if not args.window_s > 0:
+            raise InputError(f"--window-s must be > 0 s, got {args.window_s}")
+        result = {}
+        for run in args.runs:
+            path, series = probe_series(run)
+            result[path] = {name: fluctuations(a, args.window_s)
+                            for name, a in series.items()}
+        report(result, args.json)
+
+    return run_reporting_errors("probe_fluctuations", body)
+
+
+def report(result, as_json):
+    """The statistics as JSON or as a Markdown table."""
+    if as_json:
         print(json.dumps(result, indent=1))
         return
     print("| run | probe | rows | p_w mean kPa | p_w fluctuation RMS kPa | largest kPa"
@@ -121,4 +120,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

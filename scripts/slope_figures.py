@@ -21,7 +21,6 @@ positions; the initial ground surface is the thin grey line.
 Errors in the input give one line "slope_figures: error: ..." and exit code 2.
 """
 import argparse
-import csv
 import math
 import os
 import signal
@@ -297,7 +296,8 @@ class Plotter:
     def fig_probes(self, path):
         """Fig. 9: v_w / K at the probes against stage time."""
         _, plt = _mpl()
-        rows = read_probes(path)
+        rows = sm.read_probes(path, ("time_s", "stage", "name", "x_m", "y_m", "v_w_x_m_per_s",
+                                     "v_w_y_m_per_s", "K_m_per_s"))
         # Rows of the stage, plus a record at its start time written by the previous stage.
         t0, tol = self.run.stage_start_s, 1e-9 * max(1.0, abs(self.run.stage_start_s))
         own = [r for r in rows if r["stage"] == self.run.stage or abs(r["time_s"] - t0) <= tol]
@@ -335,31 +335,6 @@ class Plotter:
         ax.legend(fontsize=7, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.14))
         ax.grid(alpha=0.3)
         return self.save(fig, "fig9_vw_over_K.png")
-
-
-def read_probes(path):
-    """Rows of probes.csv with numeric columns as float."""
-    try:
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            header = reader.fieldnames or []
-            missing = [c for c in ("time_s", "stage", "name", "x_m", "y_m", "v_w_x_m_per_s",
-                                   "v_w_y_m_per_s", "K_m_per_s") if c not in header]
-            if missing:
-                raise sm.InputError(f"{path}: missing column(s) {', '.join(missing)} "
-                                    f"(header: {','.join(header) or 'empty'})")
-            rows = []
-            for n, r in enumerate(reader, start=2):
-                try:
-                    for c in header:
-                        if c not in ("stage", "name"):
-                            r[c] = float(r[c]) if r[c] not in ("", None) else math.nan
-                except ValueError:
-                    raise sm.InputError(f"{path}: line {n}: column {c} is not a number ('{r[c]}')")
-                rows.append(r)
-    except OSError as e:
-        raise sm.InputError(f"{path}: cannot read ({e})")
-    return rows
 
 
 def main(argv=None):

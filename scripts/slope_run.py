@@ -1,9 +1,12 @@
 #!/usr/bin/python3
-"""Reading a rainslide results folder: particles.h5 snapshots, metrics.json.
+"""Reading a rainslide results folder: particles.h5 snapshots, metrics.json,
+probes.csv.
 
-Shared by slope_metrics.py, slope_figures.py and slope_summary.py. Errors in
-the input are InputError with a message naming the file and what is missing.
+Shared by slope_metrics.py, slope_figures.py, slope_summary.py and
+probe_fluctuations.py. Errors in the input are InputError with a message
+naming the file and what is missing.
 """
+import csv
 import json
 import math
 import os
@@ -57,6 +60,31 @@ def read_metrics(run_dir, required=True):
     if not isinstance(data, dict):
         raise InputError(f"{path}: top level is not a JSON object")
     return data
+
+
+def read_probes(path, columns):
+    """Rows of a probes.csv as dicts, every column but stage and name as a
+    float (an empty cell as nan); `columns` are those the caller needs."""
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            header = reader.fieldnames or []
+            missing = sorted(set(columns) - set(header))
+            if missing:
+                raise InputError(f"{path}: no column(s) {', '.join(missing)} "
+                                 f"(header: {','.join(header) or 'empty'})")
+            rows = []
+            for n, r in enumerate(reader, start=2):
+                try:
+                    for c in header:
+                        if c not in ("stage", "name"):
+                            r[c] = float(r[c]) if r[c] not in ("", None) else math.nan
+                except ValueError:
+                    raise InputError(f"{path}: line {n}: column {c} is not a number ('{r[c]}')")
+                rows.append(r)
+    except OSError as e:
+        raise InputError(f"{path}: cannot read ({e})")
+    return rows
 
 
 def write_metrics_key(run_dir, key, value):
