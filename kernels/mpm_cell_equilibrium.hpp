@@ -135,17 +135,17 @@ struct CellEquilibriumLimit
   prescribed (a cell whose points already lie on it is left as it is); the
   water that moves between them carries its seepage velocity (the takers'
   v_w - v_s becomes the mass-weighted mean). Returns the CFL limit of the
-  listed points' new state (as criticalTimeStepTwoPhase, with `skeleton`
-  in the semi-implicit scheme) and how many were
+  listed points' new state for the scheme's fastest wave `wave_speed`
+  (TwoPhaseWaveSpeed, or the skeleton's DryWaveSpeed) and how many were
   listed: the step's cached limit, taken before, would be stale.
 */
-template <class ExecSpace>
+template <class ExecSpace, class WaveSpeed>
 CellEquilibriumLimit cellWaterEquilibrium(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv, const physics::GridGeometry& grid,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
     const bool saturated, const bool linear_profile,
-    CellPointLists<ExecSpace>& lists, const bool skeleton = false )
+    CellPointLists<ExecSpace>& lists, const WaveSpeed& wave_speed )
 {
     listCellPoints( exec_space, pv, wv, grid, lists );
     if ( linear_profile )
@@ -164,7 +164,6 @@ CellEquilibriumLimit cellWaterEquilibrium(
     const auto change_p = unmanaged( lists.change_p );
     const double cell_size = grid.h;
     const physics::CellWaterEquilibrium equilibrium{ water.bulk_modulus };
-    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water, skeleton );
 
     CellEquilibriumLimit result{ { 0.0, 0.0 }, 0 };
     Kokkos::parallel_reduce(

@@ -141,8 +141,9 @@ PointUpdateReport updatePoints(
   volumetric rates (cellAverageVolumetricRate, and the cell average of the
   water divergence). A point of a base cell adds the water its cell's
   empty part passes on (BaseCellAccess::extraRate). Without `water_rate`
-  (the semi-implicit step, whose pressure solve took the predictor's rate
-  r*) r is not formed: water_rate stays 0 and div_v_w_p unchanged.
+  (a pore-pressure rule that does not use it: CellPressureIncrement, whose
+  pressure solve took the predictor's rate r*) r is not formed: water_rate stays
+  0 and div_v_w_p unchanged.
 */
 template <class ExecSpace>
 struct StepVelocityGradient
@@ -321,28 +322,27 @@ struct TwoPhaseStateUpdate
 //---------------------------------------------------------------------------//
 /*!
   \brief The last point loop of the two-phase step (updatePoints): velocity
-  gradient, water divergence, pore pressure (`pore_pressure`,
-  PorePressurePointUpdate), stress, position update and diagnostics (the
-  CFL limit only with `cfl_limit`: the cell water equilibrium, which
-  changes S afterwards, reduces its own; with `skeleton` that of the
-  semi-implicit scheme, TwoPhaseWaveSpeed).
+  gradient, water divergence (if the pore-pressure rule needs the water
+  volume rate), pore pressure (`pore_pressure`, PorePressurePointUpdate),
+  stress, position update and diagnostics: the CFL limit of `wave_speed`
+  (the scheme's fastest wave) only with `cfl_limit` (the cell water
+  equilibrium, which changes S afterwards, reduces its own).
 */
-template <class ExecSpace, class PorePressureUpdate>
+template <class ExecSpace, class PorePressureUpdate, class WaveSpeed>
 PointUpdateReport updatePointsTwoPhase(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv, const GridViews<ExecSpace>& gv,
     const WaterGridViews<ExecSpace>& wg,
-    const physics::MaterialTable& materials, const physics::WaterParams& water,
-    const double dt, const bool bbar, const bool remove_outside,
-    const PorePressureUpdate& pore_pressure,
-    const BaseCellAccess<ExecSpace>& base, const bool cfl_limit,
-    const bool skeleton = false )
+    const physics::MaterialTable& materials, const double dt, const bool bbar,
+    const bool remove_outside, const PorePressureUpdate& pore_pressure,
+    const BaseCellAccess<ExecSpace>& base, const WaveSpeed& wave_speed,
+    const bool cfl_limit )
 {
     const TwoPhaseStateUpdate<ExecSpace, PorePressureUpdate> update_states{
-        StepVelocityGradient<ExecSpace>( pv, wv, gv, wg, bbar, base,
-                                         !pore_pressure.projected ),
+        StepVelocityGradient<ExecSpace>(
+            pv, wv, gv, wg, bbar, base,
+            PorePressureUpdate::increment_type::needs_water_rate ),
         pore_pressure, StressPointUpdate<ExecSpace>( pv, dt ) };
-    const TwoPhaseWaveSpeed<ExecSpace> wave_speed( pv, wv, water, skeleton );
     return updatePoints<PorePressureUpdate::lanes>(
         "mpm::update_points_two_phase", exec_space, pv, wv, materials,
         gv.geometry, remove_outside, update_states, wave_speed, cfl_limit );

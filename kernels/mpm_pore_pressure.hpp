@@ -2,8 +2,8 @@
 #define MPM_PORE_PRESSURE_HPP
 
 #include <mpm_particle_views.hpp>
+#include <mpm_pore_pressure_increments.hpp>
 #include <mpm_water_views.hpp>
-#include <physics/mpm_grid_geometry.hpp>
 #include <physics/mpm_kinematics.hpp>
 #include <physics/mpm_material_params.hpp>
 #include <physics/mpm_point_water.hpp>
@@ -54,16 +54,17 @@ struct RetentionAt
   up to `lanes` points at once, their Newton iterations in lock step
   (physics::porePressureIncrements), and adds the water they took in, ran off
   or were given to `volumes` (physics::addPointStepWater; the point volumes
-  are those at the step's start). With `projected` (the semi-implicit
-  scheme, docs/formulation.md §9) the increment is not Eq. 8 at the point
-  but the pressure solve's increment of the point's cell, dp_c at its
-  start-of-step position, and what the point's water changed by,
-  n (S' - S) + n S dp / K_w, is what the ledger books as its volume change.
+  are those at the step's start). `Increment` is the scheme's rule for the
+  increment and its water (PointWaterBalance: Eq. 8 at the point;
+  CellPressureIncrement: the pressure solve's increment of the point's
+  cell, docs/formulation.md §9).
 */
-template <class ExecSpace, class PressureView, class RateView, class FlagView>
+template <class ExecSpace, class PressureView, class RateView, class FlagView,
+          class Increment>
 struct PorePressurePointUpdate
 {
     static constexpr int lanes = 4;
+    using increment_type = Increment;
     using wv_type = WaterParticleViews<ExecSpace>;
     using scalar_view = UnmanagedView<typename wv_type::scalar_view>;
     using int_view = UnmanagedView<typename wv_type::int_view>;
@@ -78,19 +79,7 @@ struct PorePressurePointUpdate
     UnmanagedView<FlagView> prescribed_hold;
     UnmanagedView<RateView> inflow_rate;
     UnmanagedView<FlagView> inflow_ponding;
-    //! The semi-implicit scheme: the cells' increments and their grid.
-    bool projected = false;
-    UnmanagedView<Kokkos::View<double**, DeviceType<ExecSpace>>> dp_c;
-    UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> x_p;
-    physics::GridGeometry grid{};
-
-    //! The increment dp_c of point q's cell (projected).
-    KOKKOS_INLINE_FUNCTION double cellIncrement( const int q ) const
-    {
-        int ci, cj;
-        return grid.cellOf( x_p( q, 0 ), x_p( q, 1 ), ci, cj ) ? dp_c( ci, cj )
-                                                               : 0.0;
-    }
+    Increment increment;
 
     //! Water volume inflow `inflow` adds to point q per unit volume, 1/s.
     KOKKOS_INLINE_FUNCTION double inflowSource( const int q,
@@ -114,6 +103,7 @@ struct PorePressurePointUpdate
         physics::PorePressureNewton newton[lanes];
         physics::SaturationState stored[lanes];
         double source[lanes]; // the inflow's Eq. 8 source, 1/s
+        bool given[lanes];    // the increment came from the rule
         for ( int l = 0; l < lanes; ++l )
         {
             newton[l].done = true;
@@ -131,10 +121,9 @@ struct PorePressurePointUpdate
                 p_w_p( q ), S, n, water.bulk_modulus, volume_change );
             stored[l] = physics::SaturationState{ S, dS_dp_p( q ) };
             // Explicit when saturated; a prescribed p_w replaces the
-            // increment; projected: the nodal solve's.
-            newton[l].done = saturated || condition_p( q ) >= 0 || projected;
-            if ( projected )
-                newton[l].dp = cellIncrement( q );
+            // increment; or the rule gives it.
+            given[l] = increment.given( q, newton[l].dp );
+            newton[l].done = saturated || condition_p( q ) >= 0 || given[l];
         }
         physics::porePressureIncrements( retention, newton, stored,
                                          retention_current );
@@ -148,7 +137,7 @@ struct PorePressurePointUpdate
             const physics::PointPressure after =
                 physics::pointPressureAfterStep(
                     point.p_w, point.dp, point.volume_change, point.n,
-                    water.bulk_modulus, saturated && !projected,
+                    water.bulk_modulus, saturated && !given[l],
                     inflow >= 0 && inflow_ponding( inflow ), prescribed,
                     !prescribed ? 0.0
                     : prescribed_hold( condition )
@@ -166,35 +155,30 @@ struct PorePressurePointUpdate
                 dS_dp_p( q ) = state.dS_dp;
                 k_rel_p( q ) = state.k_rel;
             }
-            const double div_v_s = L[l][0][0] + L[l][1][1];
-            // Projected: the change the solve gave the point's water.
-            const double volume_change =
-                !projected ? point.volume_change
-                           : point.n * ( S_p( q ) - point.S ) +
-                                 point.storage * ( after.p_w_free - point.p_w );
-            const double flux_divergence =
-                !projected ? water_rate[l] - point.S * div_v_s
-                           : source[l] - volume_change / kinematics.dt -
-                                 point.S * div_v_s;
+            const PointWaterChange change = increment.water(
+                { point.n, point.S, S_p( q ), point.storage, point.p_w,
+                  after.p_w_free, point.volume_change, water_rate[l], source[l],
+                  L[l][0][0] + L[l][1][1], kinematics.dt } );
             physics::addPointStepWater(
-                volumes, vol_p( q ), kinematics.dt, source[l], flux_divergence,
-                volume_change, point.storage, after.capped, after.p_w_free,
-                prescribed, point.n, point.S, S_p( q ), point.p_w, p_w );
+                volumes, vol_p( q ), kinematics.dt, source[l],
+                change.flux_divergence, change.volume_change, point.storage,
+                after.capped, after.p_w_free, prescribed, point.n, point.S,
+                S_p( q ), point.p_w, p_w );
         }
     }
 };
 
-//! PorePressurePointUpdate of the points of `wv` (conditions as there).
-template <class ExecSpace, class PressureView, class RateView, class FlagView>
-PorePressurePointUpdate<ExecSpace, PressureView, RateView, FlagView>
-porePressurePointUpdate( const ParticleViews<ExecSpace>& pv,
-                         const WaterParticleViews<ExecSpace>& wv,
-                         const physics::WaterParams& water, const double dt,
-                         const bool saturated, const bool retention_current,
-                         const PressureView& prescribed_p_w,
-                         const FlagView& prescribed_hold,
-                         const RateView& inflow_rate,
-                         const FlagView& inflow_ponding )
+//! PorePressurePointUpdate of the points of `wv` (conditions as there)
+//! with the scheme's increment rule.
+template <class ExecSpace, class PressureView, class RateView, class FlagView,
+          class Increment>
+PorePressurePointUpdate<ExecSpace, PressureView, RateView, FlagView, Increment>
+porePressurePointUpdate(
+    const ParticleViews<ExecSpace>& pv, const WaterParticleViews<ExecSpace>& wv,
+    const physics::WaterParams& water, const double dt, const bool saturated,
+    const bool retention_current, const PressureView& prescribed_p_w,
+    const FlagView& prescribed_hold, const RateView& inflow_rate,
+    const FlagView& inflow_ponding, const Increment& increment )
 {
     return { physics::Kinematics{ dt },
              water,
@@ -215,10 +199,7 @@ porePressurePointUpdate( const ParticleViews<ExecSpace>& pv,
              prescribed_hold,
              inflow_rate,
              inflow_ponding,
-             false,
-             {},
-             {},
-             physics::GridGeometry{} };
+             increment };
 }
 
 } // namespace mpm

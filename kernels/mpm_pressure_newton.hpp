@@ -47,6 +47,38 @@ void forEachUnknownCell( const char* label, const ExecSpace& exec,
 
 //---------------------------------------------------------------------------//
 /*!
+  \brief The Newton iteration's start on a step's unknowns: dp_c = 0 off
+  them (on them it keeps the last step's increment) and, on them, K's
+  diagonal (A's, as assembled) into k_diagonal_c.
+*/
+template <class ExecSpace, class CellView>
+void keepPressureStartOnUnknowns( const ExecSpace& exec,
+                                  const physics::GridGeometry& grid,
+                                  const PressurePointTerms<ExecSpace>& terms,
+                                  const NodeStencilSystem<ExecSpace>& system,
+                                  const CellView& dp_c,
+                                  const CellView& k_diagonal_c )
+{
+    const auto free_points = unmanaged( terms.free_c );
+    const auto storage = unmanaged( terms.storage_c );
+    const auto dp = unmanaged( dp_c );
+    const auto k_diagonal = unmanaged( k_diagonal_c );
+    const auto a = unmanaged( system.a );
+    const int ny = grid.ny;
+    Kokkos::parallel_for(
+        "mpm::pressure_start",
+        Kokkos::RangePolicy<ExecSpace>( exec, 0, grid.nx * grid.ny ),
+        KOKKOS_LAMBDA( const int c ) {
+            const int i = c / ny, j = c % ny;
+            if ( isPressureUnknown( free_points, storage, i, j ) )
+                k_diagonal( i, j ) = a( i, j, 4 );
+            else
+                dp( i, j ) = 0.0;
+        } );
+}
+
+//---------------------------------------------------------------------------//
+/*!
   \brief The storage of each cell's free points at its iterate dp_c
   (docs/formulation.md §9, item 4): the exact change of Eq. 8's stored
   water from p_w to p_w + dp_c, dtheta = n (S(p_w + dp_c) - S(p_w)) +

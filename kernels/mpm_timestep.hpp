@@ -21,6 +21,10 @@ struct WaveSpeedLimit
 //---------------------------------------------------------------------------//
 //! The fastest wave of a dry point: the P wave, c_p = sqrt(E_c / rho_p),
 //! rho_p = m_p / vol_p, E_c at the point's volume (physics::waveSpeedDry).
+//! In a two-phase scene, rho_p = m_p / V the solid mass per unit volume:
+//! the skeleton's P wave, which limits the semi-implicit step (the water's
+//! stiffness in its pressure solve; the water's inertia left out, the
+//! faster bound).
 template <class ExecSpace>
 struct DryWaveSpeed
 {
@@ -46,11 +50,7 @@ struct DryWaveSpeed
   a point near saturation can re-wet within a step, and its fluid
   stiffness then jumps by orders of magnitude (Liakopoulos: 100-fold
   between p_w = -500 Pa and 0), which a step sized on the softer state
-  does not survive. With `skeleton` (the semi-implicit scheme, whose
-  pressure solve takes the water's stiffness implicitly): the skeleton's
-  P wave sqrt(E_c / rho_s'), rho_s' = m_p / V the solid mass per unit
-  volume (physics::waveSpeedDry; the water's inertia left out, the faster
-  bound).
+  does not survive.
 */
 template <class ExecSpace>
 struct TwoPhaseWaveSpeed
@@ -58,26 +58,19 @@ struct TwoPhaseWaveSpeed
     typename ParticleViews<ExecSpace>::unmanaged_type points;
     typename WaterParticleViews<ExecSpace>::unmanaged_type water_points;
     physics::WaterParams water;
-    bool skeleton = false;
 
     TwoPhaseWaveSpeed( const ParticleViews<ExecSpace>& pv,
                        const WaterParticleViews<ExecSpace>& wv,
-                       const physics::WaterParams& water_params,
-                       const bool skeleton_only = false )
+                       const physics::WaterParams& water_params )
         : points( unmanaged( pv ) )
         , water_points( unmanaged( wv ) )
         , water( water_params )
-        , skeleton( skeleton_only )
     {
     }
 
     KOKKOS_INLINE_FUNCTION double
     operator()( const int p, const physics::MaterialParams& params ) const
     {
-        if ( skeleton )
-            return physics::waveSpeedDry( params, points.m_p( p ),
-                                          points.vol_p( p ),
-                                          points.vol0_p( p ) );
         return physics::waveSpeedTwoPhase(
             params, water, points.m_p( p ), points.vol_p( p ),
             points.vol0_p( p ), water_points.n_p( p ), water_points.S_p( p ) );
@@ -125,7 +118,8 @@ pointWaveSpeedLimit( const char* label, const ExecSpace& exec_space,
     return limit;
 }
 
-//! CFL reduction of a dry scene (DryWaveSpeed).
+//! CFL reduction of a dry scene, or of a two-phase scene's skeleton
+//! (DryWaveSpeed).
 template <class ExecSpace>
 WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
                                  const ParticleViews<ExecSpace>& pv,
@@ -137,18 +131,18 @@ WaveSpeedLimit criticalTimeStep( const ExecSpace& exec_space,
                                 DryWaveSpeed<ExecSpace>( pv ) );
 }
 
-//! CFL reduction of a two-phase scene (TwoPhaseWaveSpeed; `skeleton`: the
-//! semi-implicit scheme's).
+//! CFL reduction of a two-phase scene (TwoPhaseWaveSpeed: the undrained
+//! mixture or pore-water wave).
 template <class ExecSpace>
 WaveSpeedLimit criticalTimeStepTwoPhase(
     const ExecSpace& exec_space, const ParticleViews<ExecSpace>& pv,
     const WaterParticleViews<ExecSpace>& wv,
     const physics::MaterialTable& materials, const physics::WaterParams& water,
-    const double cell_size, const bool skeleton = false )
+    const double cell_size )
 {
-    return pointWaveSpeedLimit(
-        "mpm::critical_time_step_two_phase", exec_space, pv, materials,
-        cell_size, TwoPhaseWaveSpeed<ExecSpace>( pv, wv, water, skeleton ) );
+    return pointWaveSpeedLimit( "mpm::critical_time_step_two_phase", exec_space,
+                                pv, materials, cell_size,
+                                TwoPhaseWaveSpeed<ExecSpace>( pv, wv, water ) );
 }
 
 } // namespace mpm

@@ -2,7 +2,7 @@
 #include <mpm_test_fixtures.hpp>
 
 #include <mpm_g2p.hpp>
-#include <solver/mpm_dry_step.hpp>
+#include <solver/steps/mpm_dry_step_phases.hpp>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_Random.hpp>
@@ -16,7 +16,7 @@ namespace
 {
 MPM_TEST_BACKEND_SUITE( Transfer );
 
-// The dry step's phases as Simulation::advanceStep<DryScene> runs them
+// The dry step's phases as DryStep::advance runs them
 // (mpm::DryStepPhases: the P2G scatter into sums kept between steps, the
 // grid update that takes them, G2P with the remap scatter, the remap, the
 // last point loop), on the test's points, grid and material.

@@ -345,7 +345,7 @@ struct SolverConfig
     //! FLIP fraction of the FLIP/PIC blend (1 = pure FLIP, 0 = pure PIC) at
     //! a step of the explicit scheme's CFL limit; smaller steps blend
     //! proportionally less PIC, the semi-implicit scheme's longer ones more
-    //! (Simulation::stepFlipFraction).
+    //! (physics::stepFlipFraction).
     double flip_fraction = 0.99;
     //! Two-phase: the water takes the solid's FLIP/PIC update plus its
     //! seepage velocity, damped as the drag damps it but never faster than

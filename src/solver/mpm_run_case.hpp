@@ -391,14 +391,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                       ? "fixed dt_s, checked against the CFL limit"
                       : "automatic: courant_number x cell / (fastest wave "
                         "speed + point speed)" },
-        { "scheme", sim.semiImplicit() ? "semi_implicit" : "explicit" },
-        { "limiting_wave",
-          sim.semiImplicit()
-              ? "P wave of the skeleton (the water's stiffness in the "
-                "pressure solve)"
-          : sim.twoPhase() ? "undrained mixture or pore-water wave (saturated "
-                             "fluid stiffness, drag implicit)"
-                           : "P wave of the skeleton" },
+        { "scheme", sim.schemeName() },
+        { "limiting_wave", sim.limitingWave() },
         { "courant_number", config.solver.courant_number },
         { "inertia_scaling", config.solver.inertia_scaling },
         { "final_cfl_limit_s", limit.dt_limit },

@@ -1,5 +1,5 @@
-#ifndef MPM_DRY_STEP_HPP
-#define MPM_DRY_STEP_HPP
+#ifndef MPM_DRY_STEP_PHASES_HPP
+#define MPM_DRY_STEP_PHASES_HPP
 
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
@@ -16,9 +16,9 @@ namespace mpm
 //---------------------------------------------------------------------------//
 /*!
   \brief The phases of the dry MUSL step (docs/formulation.md §4) with the
-  nodal sums they keep between steps. Simulation::advanceStep runs them in
-  order; the transfer tests and the benchmarks run the same phases
-  (Duplication: the scatter strategy, default as the simulation's).
+  nodal sums they keep between steps. DryStep::advance runs them in order;
+  the transfer tests and the benchmarks run the same phases (Duplication:
+  the scatter strategy, default as the simulation's).
 */
 template <class ExecSpace,
           class Duplication = typename ScatterDuplication<ExecSpace>::type>
@@ -84,4 +84,4 @@ struct DryStepPhases
 
 } // namespace mpm
 
-#endif // MPM_DRY_STEP_HPP
+#endif // MPM_DRY_STEP_PHASES_HPP

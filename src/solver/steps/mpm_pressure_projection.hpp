@@ -72,7 +72,8 @@ inline PressureSolveSettings pressureSolveSettings( const SolverConfig& s )
   velocities carry out of the cell, solved by Newton with conjugate
   gradients preconditioned by block DILU (every operation a Kokkos kernel), then
   the nodal velocities corrected by dp's forces. The points take their cell's
-  dp_c in the step's point loop (PorePressurePointUpdate, `projected`).
+  dp_c in the step's point loop (PorePressurePointUpdate with
+  CellPressureIncrement).
 */
 template <class ExecSpace>
 class PressureProjection
@@ -126,7 +127,8 @@ class PressureProjection
         pressureNodeMobility( exec, gv, wg, _terms, dt, water.viscosity,
                               inertia_scaling, inflow_flux_i, _mu_i );
         assemblePressureOperator( exec, grid, _terms, _mu_i, _system );
-        keepStartOnUnknowns( exec, grid );
+        keepPressureStartOnUnknowns( exec, grid, _terms, _system, _dp_c,
+                                     _k_diagonal_c );
         _last = CgReport{ 0, 0.0, 0.0, 0.0, true };
         if ( _system.num_nodes > 0 )
         {
@@ -159,30 +161,6 @@ class PressureProjection
     }
 
   private:
-    //! dp_c = 0 off this step's unknowns (the solve's start on them: the
-    //! last step's increment); on them, K's diagonal (A's, as assembled)
-    //! into _k_diagonal_c.
-    void keepStartOnUnknowns( const ExecSpace& exec,
-                              const physics::GridGeometry& grid )
-    {
-        const auto free_points = unmanaged( _terms.free_c );
-        const auto storage = unmanaged( _terms.storage_c );
-        const auto dp = unmanaged( _dp_c );
-        const auto k_diagonal = unmanaged( _k_diagonal_c );
-        const auto a = unmanaged( _system.a );
-        const int ny = grid.ny;
-        Kokkos::parallel_for(
-            "mpm::pressure_start",
-            Kokkos::RangePolicy<ExecSpace>( exec, 0, grid.nx * grid.ny ),
-            KOKKOS_LAMBDA( const int c ) {
-                const int i = c / ny, j = c % ny;
-                if ( isPressureUnknown( free_points, storage, i, j ) )
-                    k_diagonal( i, j ) = a( i, j, 4 );
-                else
-                    dp( i, j ) = 0.0;
-            } );
-    }
-
     /*!
       \brief Newton's method on the cells' water (docs/formulation.md §9,
       item 4): solves A e = R and moves dp along e, with R the residual of
