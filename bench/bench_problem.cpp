@@ -1,7 +1,7 @@
 #include <bench_problem.hpp>
 
 #include <io/mpm_case_reader.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <Kokkos_Core.hpp>
 

@@ -1,7 +1,7 @@
 #ifndef MPM_BENCH_PROBLEM_HPP
 #define MPM_BENCH_PROBLEM_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <mpm_g2p.hpp>
 #include <mpm_grid_update.hpp>
 #include <mpm_p2g.hpp>

@@ -10,7 +10,7 @@
 
 #include <bench_problem.hpp>
 
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <string>
 

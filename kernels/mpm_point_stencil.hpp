@@ -16,18 +16,6 @@ struct PointStencil
     double w[4], dwdx[4], dwdy[4];
 };
 
-//! A nodal field interpolated at a point: sum_k N_k f(node k).
-template <class NodeView>
-KOKKOS_INLINE_FUNCTION double interpolateAt( const PointStencil& stencil,
-                                             const NodeView& f_i )
-{
-    double f = 0.0;
-    for ( int k = 0; k < 4; ++k )
-        f += stencil.w[k] *
-             f_i( stencil.ci + ( k & 1 ), stencil.cj + ( k >> 1 ) );
-    return f;
-}
-
 /*!
   \brief The loop of the step's point kernels: calls body(p, stencil) for
   every active point p with the stencil of its cell (PointStencil), in

@@ -13,9 +13,9 @@
 #include <mpm_config.hpp>
 #include <setup/mpm_case_check.hpp>
 #include <setup/mpm_run_estimate.hpp>
-#include <solver/mpm_fos_history.hpp>
-#include <solver/mpm_fos_run.hpp>
-#include <solver/mpm_run_case.hpp>
+#include <solver/drivers/mpm_fos_history.hpp>
+#include <solver/drivers/mpm_fos_run.hpp>
+#include <solver/drivers/mpm_run_case.hpp>
 
 #include <Kokkos_Core.hpp>
 

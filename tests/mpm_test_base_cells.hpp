@@ -5,7 +5,7 @@
 // p_w of the points against a hydrostatic line, Joukowsky's pressure and
 // the history of a wetting run.
 #include <physics/mpm_wave_speeds.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #ifndef MPM_TEST_CASES_HPP
 #define MPM_TEST_CASES_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <string>
 

@@ -6,7 +6,7 @@
 // of the run, the wetting front's depth and Green-Ampt's time.
 #include <mpm_test_cases.hpp>
 
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
 

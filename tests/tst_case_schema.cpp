@@ -2,7 +2,7 @@
 // against their documentation: docs/case-file.md lists every key of every
 // table in that table's section, and no other key; for [solver] and [water]
 // with the type, default and range the reader uses.
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_schema.hpp>
 

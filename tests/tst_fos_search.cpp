@@ -1,8 +1,8 @@
 // The factor-of-safety search (bracketing + bisection) with fake trial
 // functions, the trial verdict and the strength reduction: host only.
-#include <solver/mpm_fos_criterion.hpp>
-#include <solver/mpm_fos_search.hpp>
-#include <solver/mpm_fos_trial.hpp>
+#include <solver/drivers/mpm_fos_criterion.hpp>
+#include <solver/drivers/mpm_fos_search.hpp>
+#include <solver/drivers/mpm_fos_trial.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Polygon and polyline geometry (setup/mpm_geometry.hpp): points in
+// Polygon and polyline geometry (case/mpm_geometry.hpp): points in
 // polygons, areas, self-intersections, polyline interpolation.
-#include <setup/mpm_geometry.hpp>
+#include <case/mpm_geometry.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The cells an inflow polyline passes through and each cell's share of its
-// water (src/setup/mpm_polyline_cells.cpp), against lengths worked out by
+// water (src/case/mpm_polyline_cells.cpp), against lengths worked out by
 // hand; the piecewise-linear initial pore-pressure profile.
+#include <case/mpm_polyline_cells.hpp>
 #include <mpm_test_cases.hpp>
 #include <setup/mpm_conditions.hpp>
-#include <setup/mpm_polyline_cells.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
 
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <Kokkos_Core.hpp>
 

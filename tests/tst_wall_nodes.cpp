@@ -1,8 +1,8 @@
+#include <case/mpm_geometry.hpp>
 #include <io/mpm_case_reader.hpp>
 #include <mpm_device_type.hpp>
 #include <mpm_test_cases.hpp>
 #include <setup/mpm_conditions.hpp>
-#include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
 #include <setup/mpm_wall_nodes.hpp>
 

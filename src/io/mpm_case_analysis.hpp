@@ -1,7 +1,7 @@
 #ifndef MPM_CASE_ANALYSIS_HPP
 #define MPM_CASE_ANALYSIS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_toml_access.hpp>
 
 #include <optional>

@@ -1,8 +1,8 @@
 #ifndef MPM_CASE_CONDITIONS_HPP
 #define MPM_CASE_CONDITIONS_HPP
 
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_case_analysis.hpp>
-#include <io/mpm_case_config.hpp>
 #include <io/mpm_case_diagnostics.hpp>
 
 #include <toml++/toml.h>

@@ -313,8 +313,6 @@ class Diagnostics
         return lines;
     }
 
-    const std::string& fileName() const { return _file_name; }
-
   private:
     struct Entry
     {

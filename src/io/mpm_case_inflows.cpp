@@ -1,8 +1,8 @@
+#include <case/mpm_polyline_cells.hpp>
 #include <io/mpm_case_conditions.hpp>
 #include <io/mpm_case_keys.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
-#include <setup/mpm_polyline_cells.hpp>
 
 #include <string>
 #include <vector>

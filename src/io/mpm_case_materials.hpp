@@ -1,8 +1,8 @@
 #ifndef MPM_CASE_MATERIALS_HPP
 #define MPM_CASE_MATERIALS_HPP
 
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_case_analysis.hpp>
-#include <io/mpm_case_config.hpp>
 #include <io/mpm_toml_access.hpp>
 
 #include <array>

@@ -1,7 +1,7 @@
 #ifndef MPM_CASE_READER_HPP
 #define MPM_CASE_READER_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <stdexcept>
 #include <string>

@@ -1,7 +1,7 @@
 #ifndef MPM_CASE_SCHEMA_HPP
 #define MPM_CASE_SCHEMA_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_case_diagnostics.hpp>
 #include <io/mpm_toml_access.hpp>
 

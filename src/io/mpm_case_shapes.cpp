@@ -1,6 +1,6 @@
+#include <case/mpm_geometry.hpp>
 #include <io/mpm_case_shapes.hpp>
 #include <io/mpm_toml_access.hpp>
-#include <setup/mpm_geometry.hpp>
 
 #include <algorithm>
 #include <string>

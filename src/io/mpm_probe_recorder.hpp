@@ -1,7 +1,7 @@
 #ifndef MPM_PROBE_RECORDER_HPP
 #define MPM_PROBE_RECORDER_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <records/mpm_run_records.hpp>
 
 #include <string>

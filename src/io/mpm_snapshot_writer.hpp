@@ -159,9 +159,6 @@ class SnapshotWriter
     //! \brief Final XDMF path `<out_dir>/<stem>.xdmf`.
     std::string xdmfPath() const { return _xdmf_path; }
 
-    //! \brief Path of the HDF5 file while running (`<stem>.h5.partial`).
-    std::string partialPath() const { return _partial_path; }
-
     //! \brief Number of snapshots written so far.
     int snapshotCount() const { return static_cast<int>( _records.size() ); }
 

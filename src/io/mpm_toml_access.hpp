@@ -1,7 +1,7 @@
 #ifndef MPM_TOML_ACCESS_HPP
 #define MPM_TOML_ACCESS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_case_diagnostics.hpp>
 #include <io/mpm_case_limits.hpp>
 

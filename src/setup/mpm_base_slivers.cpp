@@ -1,5 +1,5 @@
+#include <case/mpm_geometry.hpp>
 #include <setup/mpm_base_slivers.hpp>
-#include <setup/mpm_geometry.hpp>
 
 #include <mpm_device_type.hpp>
 

@@ -1,7 +1,7 @@
 #ifndef MPM_BASE_SLIVERS_HPP
 #define MPM_BASE_SLIVERS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 
 #include <vector>

@@ -1,7 +1,7 @@
 #ifndef MPM_CASE_CHECK_HPP
 #define MPM_CASE_CHECK_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <setup/mpm_run_estimate.hpp>
 
 #include <string>

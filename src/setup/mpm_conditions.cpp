@@ -1,7 +1,7 @@
+#include <case/mpm_geometry.hpp>
+#include <case/mpm_polyline_cells.hpp>
 #include <setup/mpm_conditions.hpp>
-#include <setup/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
-#include <setup/mpm_polyline_cells.hpp>
 
 #include <mpm_status_flags.hpp>
 

@@ -1,7 +1,7 @@
 #ifndef MPM_CONDITIONS_HPP
 #define MPM_CONDITIONS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <array>
 #include <cstddef>

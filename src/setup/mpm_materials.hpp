@@ -1,7 +1,7 @@
 #ifndef MPM_MATERIALS_HPP
 #define MPM_MATERIALS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <physics/mpm_material_params.hpp>
 
 #include <vector>

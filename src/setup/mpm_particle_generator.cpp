@@ -1,4 +1,4 @@
-#include <setup/mpm_geometry.hpp>
+#include <case/mpm_geometry.hpp>
 #include <setup/mpm_particle_generator.hpp>
 #include <setup/mpm_wall_nodes.hpp>
 

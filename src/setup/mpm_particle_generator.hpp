@@ -1,7 +1,7 @@
 #ifndef MPM_PARTICLE_GENERATOR_HPP
 #define MPM_PARTICLE_GENERATOR_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <vector>
 

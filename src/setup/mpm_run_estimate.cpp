@@ -1,4 +1,4 @@
-#include <setup/mpm_geometry.hpp>
+#include <case/mpm_geometry.hpp>
 #include <setup/mpm_run_estimate.hpp>
 
 #include <algorithm>
@@ -11,7 +11,7 @@ namespace mpm
 namespace
 {
 // Sizes of the data layout, bytes (views/, the host snapshot and its
-// HDF5 fields in src/solver/mpm_progress.cpp), rounded up.
+// HDF5 fields in src/solver/output/mpm_progress.cpp), rounded up.
 constexpr double point_bytes_dry = 700.0;
 constexpr double point_bytes_water = 400.0;
 constexpr double node_bytes_dry = 400.0;

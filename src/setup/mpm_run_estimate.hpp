@@ -1,7 +1,7 @@
 #ifndef MPM_RUN_ESTIMATE_HPP
 #define MPM_RUN_ESTIMATE_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <string>
 #include <vector>

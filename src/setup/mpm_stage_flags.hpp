@@ -1,7 +1,7 @@
 #ifndef MPM_STAGE_FLAGS_HPP
 #define MPM_STAGE_FLAGS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <physics/mpm_grid_geometry.hpp>
 
 #include <vector>

@@ -1,7 +1,7 @@
 #ifndef MPM_WALL_NODES_HPP
 #define MPM_WALL_NODES_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <vector>
 

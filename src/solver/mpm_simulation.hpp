@@ -1,7 +1,7 @@
 #ifndef MPM_SIMULATION_HPP
 #define MPM_SIMULATION_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <mpm_timestep.hpp>
 #include <solver/mpm_simulation_error.hpp>
 #include <solver/mpm_simulation_state.hpp>

@@ -1,7 +1,7 @@
 #ifndef MPM_SIMULATION_SETUP_HPP
 #define MPM_SIMULATION_SETUP_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
 #include <physics/mpm_grid_geometry.hpp>

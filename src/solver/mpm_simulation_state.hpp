@@ -1,7 +1,7 @@
 #ifndef MPM_SIMULATION_STATE_HPP
 #define MPM_SIMULATION_STATE_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <mpm_base_cells.hpp>
 #include <mpm_diagnostics.hpp>
 #include <mpm_grid_views.hpp>

@@ -1,11 +1,11 @@
 #ifndef MPM_STAGE_CONDITIONS_HPP
 #define MPM_STAGE_CONDITIONS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
+#include <case/mpm_polyline_cells.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_water_views.hpp>
 #include <setup/mpm_conditions.hpp>
-#include <setup/mpm_polyline_cells.hpp>
 
 #include <Kokkos_Core.hpp>
 

@@ -8,7 +8,7 @@
 #include <mpm_test_temp_dir.hpp>
 
 #include <io/mpm_case_reader.hpp>
-#include <solver/mpm_fos_run.hpp>
+#include <solver/drivers/mpm_fos_run.hpp>
 
 #include <Kokkos_Core.hpp>
 

@@ -2,7 +2,7 @@
 #include <mpm_test_cases.hpp>
 #include <mpm_test_water.hpp>
 
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
 

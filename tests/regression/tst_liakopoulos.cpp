@@ -1,7 +1,7 @@
 #include <mpm_test_backends.hpp>
 
 #include <io/mpm_case_reader.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
 

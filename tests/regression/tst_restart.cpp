@@ -7,8 +7,8 @@
 
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_checkpoint.hpp>
-#include <solver/mpm_checkpoint_state.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
 
-#include <solver/mpm_metrics.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
+#include <solver/output/mpm_metrics.hpp>
 
 #include <gtest/gtest.h>
 

@@ -6,11 +6,10 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_bbar_cell_averages.hpp>
 #include <solver/steps/mpm_dry_step_phases.hpp>
+#include <solver/steps/mpm_pressure_solve_stats.hpp>
 
 namespace mpm
 {
-struct PressureSolveStats;
-
 //---------------------------------------------------------------------------//
 /*!
   \brief The explicit MUSL step of a dry (single-phase) scene
@@ -29,19 +28,14 @@ class DryStep
     {
     }
 
-    //! The CFL limit (Courant number 1) and largest wave speed of the
-    //! points now, of the real (not inertia-scaled) system.
+    //! The CFL limit of the skeleton's P wave (StepScheme).
     WaveSpeedLimit cflLimit( const SimulationState<ExecSpace>& s ) const
     {
         return criticalTimeStep( ExecSpace(), s.particles, s.materials,
                                  s.grid.geometry.h );
     }
 
-    /*!
-      \brief One step of size dt; `limit` is the (inertia-scaled) CFL limit
-      of the state at its start, the reference of the FLIP/PIC blend
-      (physics::stepFlipFraction).
-    */
+    //! One step (StepScheme), the FLIP/PIC blend referred to `limit`.
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& limit )

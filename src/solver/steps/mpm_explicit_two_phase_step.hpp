@@ -6,12 +6,11 @@
 #include <physics/mpm_kinematics.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_bbar_cell_averages.hpp>
+#include <solver/steps/mpm_pressure_solve_stats.hpp>
 #include <solver/steps/mpm_two_phase_step_phases.hpp>
 
 namespace mpm
 {
-struct PressureSolveStats;
-
 //---------------------------------------------------------------------------//
 /*!
   \brief The explicit two-phase MUSL step (the paper's §2.6,
@@ -33,8 +32,7 @@ class ExplicitTwoPhaseStep
     {
     }
 
-    //! The CFL limit (Courant number 1) and largest wave speed of the
-    //! points now, of the real (not inertia-scaled) system.
+    //! The CFL limit of the undrained mixture or pore-water wave (StepScheme).
     WaveSpeedLimit cflLimit( const SimulationState<ExecSpace>& s ) const
     {
         return criticalTimeStepTwoPhase( ExecSpace(), s.particles,
@@ -42,11 +40,7 @@ class ExplicitTwoPhaseStep
                                          s.water, s.grid.geometry.h );
     }
 
-    /*!
-      \brief One step of size dt; `limit` is the (inertia-scaled) CFL limit
-      of the state at its start, the reference of the FLIP/PIC blend
-      (physics::stepFlipFraction).
-    */
+    //! One step (StepScheme), the FLIP/PIC blend referred to `limit`.
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& limit )

@@ -1,7 +1,7 @@
 #ifndef MPM_PRESSURE_PROJECTION_HPP
 #define MPM_PRESSURE_PROJECTION_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <mpm_grid_views.hpp>
 #include <mpm_particle_views.hpp>
 #include <mpm_pressure_correction.hpp>
@@ -12,6 +12,7 @@
 #include <mpm_water_views.hpp>
 #include <physics/mpm_material_params.hpp>
 #include <solver/mpm_simulation_error.hpp>
+#include <solver/steps/mpm_pressure_solve_stats.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -21,25 +22,6 @@
 
 namespace mpm
 {
-//! What the semi-implicit scheme's pressure solves did over a run.
-struct PressureSolveStats
-{
-    long solves = 0;                    //!< steps with a pressure solve
-    long iterations = 0;                //!< CG iterations, all solves
-    int max_iterations = 0;             //!< most iterations of one solve
-    double max_relative_residual = 0.0; //!< worst |r| / |b| at the end
-    long max_unknowns = 0;              //!< most unknown cells of one solve
-    long newton_iterations = 0;         //!< linear solves, all steps
-    int max_newton_iterations = 0;      //!< most linear solves of one step
-    long newton_unconverged = 0;        //!< steps that ended above it
-    long newton_halvings = 0;           //!< line-search halvings, all steps
-    //! Worst water residual |R| / |b| a step ended with.
-    double max_newton_residual = 0.0;
-    //! Water the steps' final residuals left unbalanced, sum of |R_I| dt
-    //! over the unknowns and steps, m^3 per m of thickness.
-    double unbalanced_water = 0.0;
-};
-
 //! Settings of the semi-implicit pressure solve (SolverConfig).
 struct PressureSolveSettings
 {

@@ -37,16 +37,15 @@ class SemiImplicitStep
     {
     }
 
-    //! The CFL limit (Courant number 1) and largest wave speed of the
-    //! skeleton's P wave now, of the real (not inertia-scaled) system.
+    //! The CFL limit of the skeleton's P wave (StepScheme).
     WaveSpeedLimit cflLimit( const SimulationState<ExecSpace>& s ) const
     {
         return criticalTimeStep( ExecSpace(), s.particles, s.materials,
                                  s.grid.geometry.h );
     }
 
-    //! One step of size dt (`limit`, the state's own CFL limit, is not
-    //! the FLIP/PIC blend's reference here: flipReferenceStep).
+    //! One step (StepScheme); the FLIP/PIC blend's reference is not
+    //! `limit`, the skeleton's, but flipReferenceStep.
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& /*limit*/ )

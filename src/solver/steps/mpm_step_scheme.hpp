@@ -1,7 +1,7 @@
 #ifndef MPM_STEP_SCHEME_HPP
 #define MPM_STEP_SCHEME_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_dry_step.hpp>
 #include <solver/steps/mpm_explicit_two_phase_step.hpp>
@@ -11,8 +11,20 @@
 
 namespace mpm
 {
-//! The step schemes a simulation can run, one type each; every one offers
-//! advance, cflLimit, pressureSolveStats, `scheme` and `limiting_wave`.
+/*!
+  \brief The step schemes a simulation can run, one type each. Every one
+  offers:
+  - `advance(state, dt, settings, limit)`: one step of size dt, its phases
+    in order; `limit` is the (inertia-scaled) CFL limit of the state at the
+    step's start, which the explicit schemes take as the FLIP/PIC blend's
+    reference (physics::stepFlipFraction); returns the point loop's report;
+  - `cflLimit(state)`: the CFL limit (Courant number 1) and largest wave
+    speed of its fastest wave on the points now, of the real (not
+    inertia-scaled) system;
+  - `pressureSolveStats()`: its pressure solves, or null;
+  - `scheme` and `limiting_wave`: its name as the case file writes it and
+    the wave that limits its step.
+*/
 template <class ExecSpace>
 using StepScheme =
     std::variant<DryStep<ExecSpace>, ExplicitTwoPhaseStep<ExecSpace>,

@@ -2,7 +2,7 @@
 #define MPM_PROGRESS_HPP
 
 #include <io/mpm_snapshot_writer.hpp>
-#include <solver/mpm_run_observer.hpp>
+#include <solver/output/mpm_run_observer.hpp>
 
 #include <nlohmann/json.hpp>
 

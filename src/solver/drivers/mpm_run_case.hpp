@@ -1,17 +1,19 @@
 #ifndef MPM_RUN_CASE_HPP
 #define MPM_RUN_CASE_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <io/mpm_checkpoint_check.hpp>
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_snapshot_writer.hpp>
-#include <solver/mpm_checkpoint_state.hpp>
-#include <solver/mpm_metrics.hpp>
-#include <solver/mpm_progress.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 #include <solver/mpm_simulation.hpp>
+#include <solver/output/mpm_metrics.hpp>
+#include <solver/output/mpm_output_observer.hpp>
+#include <solver/output/mpm_progress.hpp>
+#include <solver/output/mpm_run_metrics.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -59,120 +61,6 @@ class RestartError : public std::runtime_error
         : std::runtime_error( message )
     {
     }
-};
-
-//---------------------------------------------------------------------------//
-/*!
-  \brief Writes snapshots to HDF5/XDMF, checkpoints to
-  `<out>/checkpoint.h5` and progress lines to stderr; stops the run on
-  SIGINT/SIGTERM or after `stop_after_steps` steps.
-*/
-class OutputObserver : public RunObserver
-{
-  public:
-    using clock = std::chrono::steady_clock;
-
-    OutputObserver( SnapshotWriter& writer, ProgressPrinter& printer,
-                    const std::string& checkpoint_path,
-                    const double wall_before_s, const long stop_after_steps )
-        : _writer( writer )
-        , _printer( printer )
-        , _checkpoint_path( checkpoint_path )
-        , _wall_before_s( wall_before_s )
-        , _stop_after_steps( stop_after_steps )
-        , _start( clock::now() )
-    {
-    }
-    void onStep( const RunProgress& progress ) override
-    {
-        ++_steps;
-        _printer.update( progress );
-    }
-    void onSnapshot( const RunProgress& progress,
-                     const HostSnapshot& snapshot ) override
-    {
-        writeSnapshot( _writer, progress, snapshot );
-        pore_pressure.add( snapshot, progress.time_s );
-        last_snapshot = snapshot;
-    }
-    void onStageEnd( const RunProgress& progress,
-                     const StageSummary& summary ) override
-    {
-        _printer.stageEnd( progress, summary );
-    }
-    //! "<case file>: warning: <text>" on stderr.
-    void onWarning( const std::string& text ) override
-    {
-        std::cerr << case_file << ": warning: " << text << "\n";
-    }
-    bool stopRequested() override
-    {
-        return interruptRequested() ||
-               ( _stop_after_steps > 0 && _steps >= _stop_after_steps );
-    }
-    //! Writes the checkpoint; a failure is reported and the run goes on
-    //! (the previous checkpoint stays valid).
-    void onCheckpoint( Checkpoint& checkpoint ) override
-    {
-        checkpoint.snapshots = _writer.mark();
-        checkpoint.wall_s = wallSeconds();
-        try
-        {
-            const auto start = clock::now();
-            writeCheckpoint( _checkpoint_path, checkpoint );
-            const double write_s =
-                std::chrono::duration<double>( clock::now() - start ).count();
-            checkpoint_write_s_total += write_s;
-            checkpoint_write_s_max =
-                std::max( checkpoint_write_s_max, write_s );
-            last_checkpoint_step = checkpoint.step;
-            last_checkpoint_time_s = checkpoint.time_s;
-            ++checkpoints_written;
-        }
-        catch ( const std::exception& error )
-        {
-            checkpoint_error = error.what();
-            std::cerr << "rainslide: warning: checkpoint not written: "
-                      << error.what() << "\n";
-        }
-    }
-    double nextSampleTime() const override
-    {
-        return probes ? probes->nextTime() : 1.0e300;
-    }
-    void onSample( const RunProgress& progress,
-                   const HostSnapshot& snapshot ) override
-    {
-        if ( probes )
-            probes->record( progress, snapshot );
-    }
-    //! Wall time of the whole run: earlier sessions plus this one.
-    double wallSeconds() const
-    {
-        return _wall_before_s +
-               std::chrono::duration<double>( clock::now() - _start ).count();
-    }
-
-    std::string case_file; //!< names the case in warnings
-    HostSnapshot last_snapshot;
-    //! p_w extremes over this session's snapshots (two-phase).
-    PorePressureExtremes pore_pressure;
-    ProbeRecorder* probes = nullptr; //!< tracked points, if the case has any
-    int checkpoints_written = 0;
-    double checkpoint_write_s_total = 0.0; //!< wall time writing them
-    double checkpoint_write_s_max = 0.0;
-    long last_checkpoint_step = -1;
-    double last_checkpoint_time_s = 0.0;
-    std::string checkpoint_error;
-
-  private:
-    SnapshotWriter& _writer;
-    ProgressPrinter& _printer;
-    std::string _checkpoint_path;
-    double _wall_before_s;
-    long _stop_after_steps;
-    long _steps = 0;
-    clock::time_point _start;
 };
 
 //---------------------------------------------------------------------------//
@@ -386,45 +274,12 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     metrics["removed_points"] = sim.num_removed;
     // Which limit set the step.
     const WaveSpeedLimit limit = sim.waveSpeedLimit();
-    metrics["time_step"] = {
-        { "rule", config.solver.dt_s > 0.0
-                      ? "fixed dt_s, checked against the CFL limit"
-                      : "automatic: courant_number x cell / (fastest wave "
-                        "speed + point speed)" },
-        { "scheme", sim.schemeName() },
-        { "limiting_wave", sim.limitingWave() },
-        { "courant_number", config.solver.courant_number },
-        { "inertia_scaling", config.solver.inertia_scaling },
-        { "final_cfl_limit_s", limit.dt_limit },
-        { "final_max_wave_speed_m_per_s", limit.max_wave_speed } };
+    metrics["time_step"] = timeStepMetrics(
+        config.solver, { sim.schemeName(), sim.limitingWave(), limit.dt_limit,
+                         limit.max_wave_speed } );
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
-        metrics["pressure_solve"] = {
-            { "method", "Newton on each cell's pressure increment, each "
-                        "linear solve by conjugate gradients preconditioned "
-                        "by block DILU (picard_*: the Newton iteration)" },
-            { "tolerance", config.solver.pressure_tolerance },
-            { "max_iterations_allowed",
-              static_cast<int>( config.solver.pressure_max_iterations ) },
-            { "solves", solves->solves },
-            { "iterations_total", solves->iterations },
-            { "iterations_mean",
-              solves->solves > 0
-                  ? double( solves->iterations ) / double( solves->solves )
-                  : 0.0 },
-            { "iterations_max", solves->max_iterations },
-            { "max_unknowns", solves->max_unknowns },
-            { "worst_relative_residual", solves->max_relative_residual },
-            { "picard_tolerance", config.solver.pressure_picard_tolerance },
-            { "picard_solves_total", solves->newton_iterations },
-            { "picard_solves_mean", solves->solves > 0
-                                        ? double( solves->newton_iterations ) /
-                                              double( solves->solves )
-                                        : 0.0 },
-            { "picard_solves_max", solves->max_newton_iterations },
-            { "picard_halvings_total", solves->newton_halvings },
-            { "picard_unconverged_steps", solves->newton_unconverged },
-            { "picard_worst_water_residual", solves->max_newton_residual },
-            { "picard_unbalanced_water_m3_per_m", solves->unbalanced_water } };
+        metrics["pressure_solve"] =
+            pressureSolveMetrics( config.solver, *solves );
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );

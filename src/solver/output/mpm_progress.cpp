@@ -1,4 +1,4 @@
-#include <solver/mpm_progress.hpp>
+#include <solver/output/mpm_progress.hpp>
 
 #include <records/mpm_point_fields.hpp>
 

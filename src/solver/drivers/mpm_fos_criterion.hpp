@@ -1,7 +1,7 @@
 #ifndef MPM_FOS_CRITERION_HPP
 #define MPM_FOS_CRITERION_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <nlohmann/json.hpp>
 

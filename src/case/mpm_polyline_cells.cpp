@@ -1,4 +1,4 @@
-#include <setup/mpm_polyline_cells.hpp>
+#include <case/mpm_polyline_cells.hpp>
 
 #include <algorithm>
 #include <cmath>

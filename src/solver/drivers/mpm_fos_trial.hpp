@@ -1,13 +1,13 @@
 #ifndef MPM_FOS_TRIAL_HPP
 #define MPM_FOS_TRIAL_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
-#include <solver/mpm_checkpoint_state.hpp>
-#include <solver/mpm_fos_criterion.hpp>
-#include <solver/mpm_progress.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_fos_criterion.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
 #include <solver/mpm_simulation.hpp>
+#include <solver/output/mpm_progress.hpp>
 
 #include <algorithm>
 #include <chrono>

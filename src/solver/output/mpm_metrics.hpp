@@ -1,8 +1,8 @@
 #ifndef MPM_METRICS_HPP
 #define MPM_METRICS_HPP
 
-#include <io/mpm_case_config.hpp>
-#include <solver/mpm_run_observer.hpp>
+#include <case/mpm_case_config.hpp>
+#include <solver/output/mpm_run_observer.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -1,15 +1,15 @@
 #ifndef MPM_FOS_RUN_HPP
 #define MPM_FOS_RUN_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_snapshot_writer.hpp>
-#include <solver/mpm_fos_criterion.hpp>
-#include <solver/mpm_fos_search.hpp>
-#include <solver/mpm_fos_trial.hpp>
-#include <solver/mpm_progress.hpp>
-#include <solver/mpm_run_case.hpp>
-#include <solver/mpm_run_stages.hpp>
+#include <solver/drivers/mpm_fos_criterion.hpp>
+#include <solver/drivers/mpm_fos_search.hpp>
+#include <solver/drivers/mpm_fos_trial.hpp>
+#include <solver/drivers/mpm_run_case.hpp>
+#include <solver/drivers/mpm_run_stages.hpp>
+#include <solver/output/mpm_progress.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include <solver/mpm_fos_criterion.hpp>
+#include <solver/drivers/mpm_fos_criterion.hpp>
 
 #include <cmath>
 #include <sstream>

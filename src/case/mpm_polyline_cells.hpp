@@ -1,7 +1,7 @@
 #ifndef MPM_POLYLINE_CELLS_HPP
 #define MPM_POLYLINE_CELLS_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <array>
 #include <map>

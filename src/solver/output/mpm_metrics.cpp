@@ -1,4 +1,4 @@
-#include <solver/mpm_metrics.hpp>
+#include <solver/output/mpm_metrics.hpp>
 
 #include <mpm_device_type.hpp>
 

@@ -1,9 +1,9 @@
 #ifndef MPM_STATIC_STOP_HPP
 #define MPM_STATIC_STOP_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <records/mpm_stage_state.hpp>
-#include <solver/mpm_run_observer.hpp>
+#include <solver/output/mpm_run_observer.hpp>
 
 #include <mpm_device_type.hpp>
 

@@ -1,4 +1,4 @@
-#include <setup/mpm_geometry.hpp>
+#include <case/mpm_geometry.hpp>
 
 #include <algorithm>
 #include <cmath>

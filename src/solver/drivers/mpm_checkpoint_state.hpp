@@ -1,7 +1,7 @@
 #ifndef MPM_CHECKPOINT_STATE_HPP
 #define MPM_CHECKPOINT_STATE_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <records/mpm_stage_state.hpp>
 #include <solver/mpm_simulation.hpp>

@@ -1,7 +1,7 @@
 #ifndef MPM_GEOMETRY_HPP
 #define MPM_GEOMETRY_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 
 #include <vector>
 

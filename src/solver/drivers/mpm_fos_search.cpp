@@ -1,4 +1,4 @@
-#include <solver/mpm_fos_search.hpp>
+#include <solver/drivers/mpm_fos_search.hpp>
 
 #include <algorithm>
 #include <cmath>

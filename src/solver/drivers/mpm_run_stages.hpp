@@ -1,15 +1,15 @@
 #ifndef MPM_RUN_STAGES_HPP
 #define MPM_RUN_STAGES_HPP
 
-#include <io/mpm_case_config.hpp>
+#include <case/mpm_case_config.hpp>
 #include <records/mpm_point_fields.hpp>
 #include <records/mpm_stage_state.hpp>
-#include <solver/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_static_stop.hpp>
 #include <solver/mpm_host_snapshot.hpp>
 #include <solver/mpm_initial_stress.hpp>
-#include <solver/mpm_run_observer.hpp>
 #include <solver/mpm_simulation.hpp>
-#include <solver/mpm_static_stop.hpp>
+#include <solver/output/mpm_run_observer.hpp>
 
 #include <Kokkos_Core.hpp>
 

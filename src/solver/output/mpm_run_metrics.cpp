@@ -1,0 +1,52 @@
+#include <solver/output/mpm_run_metrics.hpp>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+nlohmann::json timeStepMetrics( const SolverConfig& solver,
+                                const TimeStepRecord& record )
+{
+    return { { "rule", solver.dt_s > 0.0
+                           ? "fixed dt_s, checked against the CFL limit"
+                           : "automatic: courant_number x cell / (fastest "
+                             "wave speed + point speed)" },
+             { "scheme", record.scheme },
+             { "limiting_wave", record.limiting_wave },
+             { "courant_number", solver.courant_number },
+             { "inertia_scaling", solver.inertia_scaling },
+             { "final_cfl_limit_s", record.final_cfl_limit_s },
+             { "final_max_wave_speed_m_per_s",
+               record.final_max_wave_speed_m_per_s } };
+}
+
+//---------------------------------------------------------------------------//
+nlohmann::json pressureSolveMetrics( const SolverConfig& solver,
+                                     const PressureSolveStats& solves )
+{
+    const auto mean = [&]( const long total ) {
+        return solves.solves > 0 ? double( total ) / double( solves.solves )
+                                 : 0.0;
+    };
+    return { { "method", "Newton on each cell's pressure increment, each "
+                         "linear solve by conjugate gradients preconditioned "
+                         "by block DILU (picard_*: the Newton iteration)" },
+             { "tolerance", solver.pressure_tolerance },
+             { "max_iterations_allowed",
+               static_cast<int>( solver.pressure_max_iterations ) },
+             { "solves", solves.solves },
+             { "iterations_total", solves.iterations },
+             { "iterations_mean", mean( solves.iterations ) },
+             { "iterations_max", solves.max_iterations },
+             { "max_unknowns", solves.max_unknowns },
+             { "worst_relative_residual", solves.max_relative_residual },
+             { "picard_tolerance", solver.pressure_picard_tolerance },
+             { "picard_solves_total", solves.newton_iterations },
+             { "picard_solves_mean", mean( solves.newton_iterations ) },
+             { "picard_solves_max", solves.max_newton_iterations },
+             { "picard_halvings_total", solves.newton_halvings },
+             { "picard_unconverged_steps", solves.newton_unconverged },
+             { "picard_worst_water_residual", solves.max_newton_residual },
+             { "picard_unbalanced_water_m3_per_m", solves.unbalanced_water } };
+}
+
+} // namespace mpm

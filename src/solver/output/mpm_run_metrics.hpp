@@ -1,0 +1,33 @@
+#ifndef MPM_RUN_METRICS_HPP
+#define MPM_RUN_METRICS_HPP
+
+#include <case/mpm_case_config.hpp>
+#include <solver/steps/mpm_pressure_solve_stats.hpp>
+
+#include <nlohmann/json.hpp>
+
+namespace mpm
+{
+//! What set a run's time step, for metrics.json's `time_step`.
+struct TimeStepRecord
+{
+    const char* scheme;        //!< the step scheme, as the case names it
+    const char* limiting_wave; //!< the wave whose speed limits the step
+    double final_cfl_limit_s;  //!< the CFL limit at the end of the run
+    double final_max_wave_speed_m_per_s;
+};
+
+//! metrics.json's `time_step`: the rule ([solver] dt_s or courant_number),
+//! the scheme and its limiting wave, the final CFL limit.
+nlohmann::json timeStepMetrics( const SolverConfig& solver,
+                                const TimeStepRecord& record );
+
+//! metrics.json's `pressure_solve`: the semi-implicit scheme's solver
+//! settings and what its solves did (iterations, residuals, the water the
+//! final residuals left unbalanced).
+nlohmann::json pressureSolveMetrics( const SolverConfig& solver,
+                                     const PressureSolveStats& solves );
+
+} // namespace mpm
+
+#endif // MPM_RUN_METRICS_HPP
