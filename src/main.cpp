@@ -288,6 +288,15 @@ int main( int argc, char* argv[] )
         printCheckSummary( config, estimate );
         return 0;
     }
+    // A strength reduction needs a skeleton that can move.
+    if ( fos->parsed() && config.solver.scheme == mpm::TwoPhaseScheme::Seepage )
+    {
+        std::cerr << config.file
+                  << ": error: key 'solver.scheme': rainslide fos needs a "
+                     "scheme that moves the skeleton (\"explicit\" or "
+                     "\"semi_implicit\"), found \"seepage\", which holds it\n";
+        return exit_bad_input;
+    }
     if ( fos->parsed() && options.out_dir.empty() )
         options.out_dir = "results/" + config.name + "_fos";
     if ( options.out_dir.empty() && !options.restart_file.empty() )

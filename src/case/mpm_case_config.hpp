@@ -332,8 +332,9 @@ struct GridConfig
 //! How a two-phase step finds the pore pressure (solver.scheme).
 enum class TwoPhaseScheme
 {
-    Explicit,    //!< Eq. 8 at the points (docs/formulation.md §3)
-    SemiImplicit //!< a nodal pressure solve (docs/formulation.md §9)
+    Explicit,     //!< Eq. 8 at the points (docs/formulation.md §3)
+    SemiImplicit, //!< a cell pressure solve (docs/formulation.md §9)
+    Seepage       //!< the skeleton held, the flow in real time (§10)
 };
 
 struct SolverConfig
@@ -386,8 +387,14 @@ struct SolverConfig
     double inertia_scaling = 1.0;
     //! Simulated time between checkpoints (restart files); 0 = none.
     double checkpoint_interval_s = 0.0;
-    //! Two-phase: explicit Eq. 8, or the semi-implicit pressure solve.
+    //! Two-phase: explicit Eq. 8, the semi-implicit pressure solve, or
+    //! seepage through the held skeleton.
     TwoPhaseScheme scheme = TwoPhaseScheme::Explicit;
+    //! Seepage: the largest change of a point's saturation in one step
+    //! that sets the next step.
+    double seepage_saturation_change = 0.01;
+    //! Seepage: the first step, s.
+    double seepage_initial_dt_s = 1.0;
     //! Semi-implicit: the pressure solve stops at |r| <= tolerance |b|.
     double pressure_tolerance = 1.0e-10;
     //! Semi-implicit: the most conjugate-gradient iterations of one solve.

@@ -70,8 +70,9 @@ class CaseParser
             TableReader r( *t, "solver", _diag );
             Impl::readConfigKeys( r, Impl::solverKeys(), "[solver]",
                                   _config.solver );
-            // The semi-implicit scheme solves for the pore pressure.
-            if ( _config.solver.scheme == TwoPhaseScheme::SemiImplicit )
+            // The semi-implicit and seepage schemes solve for the pore
+            // pressure.
+            if ( _config.solver.scheme != TwoPhaseScheme::Explicit )
                 Impl::rejectIfDry( r, "scheme", _analysis );
         }
         parseStages( root );

@@ -7,8 +7,8 @@ namespace Impl
 //---------------------------------------------------------------------------//
 const std::vector<std::string>& twoPhaseSchemeNames()
 {
-    static const std::vector<std::string> names = { "explicit",
-                                                    "semi_implicit" };
+    static const std::vector<std::string> names = { "explicit", "semi_implicit",
+                                                    "seepage" };
     return names;
 }
 
@@ -40,6 +40,10 @@ const std::vector<ConfigKey<SolverConfig>>& solverKeys()
                    "s of simulated time (0 = no checkpoints)" ),
         choiceKey<S, TwoPhaseScheme, &S::scheme>( "scheme",
                                                   twoPhaseSchemeNames() ),
+        numberKey( "seepage_saturation_change", &S::seepage_saturation_change,
+                   Range::interval( 0.0, true, 1.0, false ), "" ),
+        numberKey( "seepage_initial_dt_s", &S::seepage_initial_dt_s,
+                   Range::above( 0.0 ), "s" ),
         numberKey( "pressure_tolerance", &S::pressure_tolerance,
                    Range::interval( 0.0, true, 1.0, true ),
                    "(relative residual)" ),

@@ -95,10 +95,14 @@ RunEstimate estimateRun( const CaseConfig& config )
         consider( stage.materials );
 
     const SolverConfig& s = config.solver;
+    // The seepage step is set by the flow as it runs: its first step bounds
+    // the estimate (it grows from there while the flow allows).
+    const bool seepage = s.scheme == TwoPhaseScheme::Seepage;
     const double dt = s.dt_s > 0.0 ? s.dt_s
+                      : seepage    ? s.seepage_initial_dt_s
                                    : s.courant_number * h *
-                                         std::sqrt( s.inertia_scaling ) /
-                                         e.max_wave_speed_m_per_s;
+                                      std::sqrt( s.inertia_scaling ) /
+                                      e.max_wave_speed_m_per_s;
     for ( const StageConfig& stage : config.stages )
     {
         StageEstimate st;
@@ -142,11 +146,15 @@ std::vector<std::string> runRefusals( const CaseConfig& config,
     const bool fixed = config.solver.dt_s > 0.0;
     const std::string dt_source =
         fixed ? "solver.dt_s = " + number( config.solver.dt_s ) + " s"
-              : "solver.courant_number = " +
-                    number( config.solver.courant_number ) +
-                    " x cell_size_m / P-wave speed " +
-                    number( e.max_wave_speed_m_per_s ) + " m/s of material '" +
-                    e.fastest_material + "'";
+        : config.solver.scheme == TwoPhaseScheme::Seepage
+            ? "solver.seepage_initial_dt_s = " +
+                  number( config.solver.seepage_initial_dt_s ) +
+                  " s, the seepage scheme's first step"
+            : "solver.courant_number = " +
+                  number( config.solver.courant_number ) +
+                  " x cell_size_m / P-wave speed " +
+                  number( e.max_wave_speed_m_per_s ) + " m/s of material '" +
+                  e.fastest_material + "'";
 
     // A time step that cannot advance the time: never ends.
     for ( std::size_t k = 0; k < e.stages.size() && !cannot_finish; ++k )

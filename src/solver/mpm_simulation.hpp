@@ -37,6 +37,33 @@ class Simulation : public SimulationState<ExecSpace>
         return std::visit( []( const auto& s ) { return s.scheme; }, _scheme );
     }
 
+    //! False if the scheme holds the skeleton (seepage).
+    bool movesSkeleton() const
+    {
+        return std::visit( []( const auto& s ) { return s.moves_skeleton; },
+                           _scheme );
+    }
+
+    //! How the scheme chooses its step (solver.dt_s fixed or not).
+    const char* stepRule() const
+    {
+        const bool fixed = this->solver.dt_s > 0.0;
+        return std::visit( [fixed]( const auto& s )
+                           { return fixed ? s.fixed_step : s.automatic_step; },
+                           _scheme );
+    }
+
+    //! The step the scheme takes next (its nextStep at the CFL limit of
+    //! the state now); throws SimulationError for a fixed solver.dt_s
+    //! above the CFL limit of a scheme that has one.
+    double nextStep() const
+    {
+        const WaveSpeedLimit limit = waveSpeedLimit();
+        return std::visit( [&]( const auto& s )
+                           { return s.nextStep( *this, limit ); },
+                           _scheme );
+    }
+
     //! The wave whose speed limits the scheme's step.
     const char* limitingWave() const
     {

@@ -120,6 +120,19 @@ TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
     EXPECT_FALSE( fs::exists( dir / "out" ) );
 }
 
+// A strength reduction on a held skeleton would never fail: refused.
+TEST( Cli, fos_refuses_the_seepage_scheme )
+{
+    const fs::path dir = mpm_test::freshTempDir( "fos_seepage" );
+    const auto result = runCommand(
+        "fos " + std::string( RAINSLIDE_CASES_DIR ) + "/terzaghi.toml --out " +
+        ( dir / "out" ).string() + " --set 'solver.scheme=\"seepage\"'" );
+    mpm_test::expectExit( result, 2,
+                          "key 'solver.scheme': rainslide fos needs a scheme "
+                          "that moves the skeleton" );
+    EXPECT_FALSE( fs::exists( dir / "out" ) );
+}
+
 TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )
 {
     const fs::path dir = mpm_test::freshTempDir( "unstable" );

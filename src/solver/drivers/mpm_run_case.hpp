@@ -161,7 +161,7 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
         resumed =
             resumeFromCheckpoint( sim, config, options, earlier_snapshots );
     // Refuse a fixed time step above the stable limit before writing anything.
-    chooseTimeStep( sim.solver, sim.waveSpeedLimit() );
+    sim.nextStep();
     // Accepted: an old metrics.json must not survive a run that then fails
     // to write one (a refused run leaves the folder as it was).
     std::filesystem::remove( options.out_dir + "/metrics.json" );
@@ -275,8 +275,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     // Which limit set the step.
     const WaveSpeedLimit limit = sim.waveSpeedLimit();
     metrics["time_step"] = timeStepMetrics(
-        config.solver, { sim.schemeName(), sim.limitingWave(), limit.dt_limit,
-                         limit.max_wave_speed } );
+        config.solver, { sim.schemeName(), sim.stepRule(), sim.limitingWave(),
+                         limit.dt_limit, limit.max_wave_speed } );
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
         metrics["pressure_solve"] =
             pressureSolveMetrics( config.solver, *solves );

@@ -6,10 +6,7 @@ namespace mpm
 nlohmann::json timeStepMetrics( const SolverConfig& solver,
                                 const TimeStepRecord& record )
 {
-    return { { "rule", solver.dt_s > 0.0
-                           ? "fixed dt_s, checked against the CFL limit"
-                           : "automatic: courant_number x cell / (fastest "
-                             "wave speed + point speed)" },
+    return { { "rule", record.rule },
              { "scheme", record.scheme },
              { "limiting_wave", record.limiting_wave },
              { "courant_number", solver.courant_number },

@@ -12,13 +12,14 @@ namespace mpm
 struct TimeStepRecord
 {
     const char* scheme;        //!< the step scheme, as the case names it
+    const char* rule;          //!< how it chose the step
     const char* limiting_wave; //!< the wave whose speed limits the step
     double final_cfl_limit_s;  //!< the CFL limit at the end of the run
     double final_max_wave_speed_m_per_s;
 };
 
-//! metrics.json's `time_step`: the rule ([solver] dt_s or courant_number),
-//! the scheme and its limiting wave, the final CFL limit.
+//! metrics.json's `time_step`: the rule, the scheme and its limiting wave,
+//! the final CFL limit.
 nlohmann::json timeStepMetrics( const SolverConfig& solver,
                                 const TimeStepRecord& record );
 

@@ -5,6 +5,7 @@
 #include <physics/mpm_kinematics.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_bbar_cell_averages.hpp>
+#include <solver/steps/mpm_cfl_step.hpp>
 #include <solver/steps/mpm_dry_step_phases.hpp>
 #include <solver/steps/mpm_pressure_solve_stats.hpp>
 
@@ -17,7 +18,7 @@ namespace mpm
   at the CFL limit of the skeleton's P wave.
 */
 template <class ExecSpace>
-class DryStep
+class DryStep : public CflStepRule
 {
   public:
     static constexpr const char* scheme = "explicit";

@@ -6,6 +6,7 @@
 #include <physics/mpm_kinematics.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_bbar_cell_averages.hpp>
+#include <solver/steps/mpm_cfl_step.hpp>
 #include <solver/steps/mpm_pressure_solve_stats.hpp>
 #include <solver/steps/mpm_two_phase_step_phases.hpp>
 
@@ -19,7 +20,7 @@ namespace mpm
   CFL limit of the undrained mixture or pore-water wave.
 */
 template <class ExecSpace>
-class ExplicitTwoPhaseStep
+class ExplicitTwoPhaseStep : public CflStepRule
 {
   public:
     static constexpr const char* scheme = "explicit";
@@ -66,15 +67,11 @@ class ExplicitTwoPhaseStep
         // diagnostics of the new state.
         const TwoPhaseWaveSpeed<ExecSpace> wave_speed(
             s.particles, s.water_particles, s.water );
-        PointUpdateReport report = _phases.updatePoints(
-            exec, s, dt,
-            porePressurePointUpdate(
-                s.particles, s.water_particles, s.water, dt,
-                s.analysis == AnalysisType::Saturated, s.retention_current,
-                s.conditions.prescribed_p_w, s.conditions.prescribed_hold,
-                s.conditions.inflow_rate, s.conditions.inflow_ponding,
-                PointWaterBalance{} ),
-            wave_speed );
+        PointUpdateReport report =
+            _phases.updatePoints( exec, s, dt,
+                                  TwoPhaseStepPhases<ExecSpace>::porePressure(
+                                      s, dt, PointWaterBalance{} ),
+                                  wave_speed );
         // 6b. Cell water equilibrium, and the CFL limit after it.
         if ( s.solver.cell_equilibrium )
             _phases.cellEquilibrium( exec, s, report, wave_speed,

@@ -6,6 +6,8 @@
 #include <physics/mpm_kinematics.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_bbar_cell_averages.hpp>
+#include <solver/steps/mpm_cell_pressure_phase.hpp>
+#include <solver/steps/mpm_cfl_step.hpp>
 #include <solver/steps/mpm_pressure_projection.hpp>
 #include <solver/steps/mpm_two_phase_step_phases.hpp>
 
@@ -23,7 +25,7 @@ namespace mpm
   step on the paper's slope.
 */
 template <class ExecSpace>
-class SemiImplicitStep
+class SemiImplicitStep : public CflStepRule
 {
   public:
     static constexpr const char* scheme = "semi_implicit";
@@ -60,23 +62,8 @@ class SemiImplicitStep
         _phases.updateGrid( exec, s, dt, settings );
         // 2b. Each cell's pressure increment of Eq. 8 at the new time and
         // the nodal velocities it corrects.
-        const auto pore_pressure = porePressurePointUpdate(
-            s.particles, s.water_particles, s.water, dt,
-            s.analysis == AnalysisType::Saturated, s.retention_current,
-            s.conditions.prescribed_p_w, s.conditions.prescribed_hold,
-            s.conditions.inflow_rate, s.conditions.inflow_ponding,
-            CellPressureIncrement<ExecSpace>{
-                s.water_grid.dp_w_c, s.particles.x_p, s.grid.geometry } );
-        const auto source = KOKKOS_LAMBDA( const int q )
-        {
-            return pore_pressure.inflowSource( q, pore_pressure.inflow_p( q ) );
-        };
-        _projection.correct(
-            exec, s.particles, s.water_particles, s.grid, s.water_grid,
-            s.materials, s.water, s.analysis == AnalysisType::Saturated,
-            s.solver.inertia_scaling, dt, source, s.conditions.inflow_flux_i,
-            pressureSolveSettings( s.solver ), _phases.cellLists(), s.step + 1,
-            s.time );
+        const auto pore_pressure =
+            solveCellPressures( exec, s, dt, _phases, _projection );
         // 3. G2P (FLIP/PIC); 4. the MUSL remap of both phases; 4b. the base
         // cells' water.
         _phases.gatherAndRemap(

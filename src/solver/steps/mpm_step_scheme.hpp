@@ -5,6 +5,7 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_dry_step.hpp>
 #include <solver/steps/mpm_explicit_two_phase_step.hpp>
+#include <solver/steps/mpm_seepage_step.hpp>
 #include <solver/steps/mpm_semi_implicit_step.hpp>
 
 #include <variant>
@@ -18,20 +19,25 @@ namespace mpm
     in order; `limit` is the (inertia-scaled) CFL limit of the state at the
     step's start, which the explicit schemes take as the FLIP/PIC blend's
     reference (physics::stepFlipFraction); returns the point loop's report;
+  - `nextStep(state, limit)`: the step it takes next, given the CFL limit
+    `limit` of the state now;
   - `cflLimit(state)`: the CFL limit (Courant number 1) and largest wave
     speed of its fastest wave on the points now, of the real (not
     inertia-scaled) system;
   - `pressureSolveStats()`: its pressure solves, or null;
-  - `scheme` and `limiting_wave`: its name as the case file writes it and
-    the wave that limits its step.
+  - `moves_skeleton`: false if it holds the skeleton (a quasi-static stage
+    then has nothing to settle);
+  - `scheme`, `automatic_step`, `fixed_step` and `limiting_wave`: its name
+    as the case file writes it, how it chooses its step (without and with
+    solver.dt_s) and the wave that limits its step.
 */
 template <class ExecSpace>
 using StepScheme =
     std::variant<DryStep<ExecSpace>, ExplicitTwoPhaseStep<ExecSpace>,
-                 SemiImplicitStep<ExecSpace>>;
+                 SemiImplicitStep<ExecSpace>, SeepageStep<ExecSpace>>;
 
 //! The scheme of `state`'s scene and [solver] scheme: the dry step for a
-//! dry scene, else the explicit or semi-implicit two-phase step.
+//! dry scene, else the explicit, semi-implicit or seepage two-phase step.
 template <class ExecSpace>
 StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
 {
@@ -41,6 +47,9 @@ StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
     if ( state.solver.scheme == TwoPhaseScheme::SemiImplicit )
         return StepScheme<ExecSpace>(
             std::in_place_type<SemiImplicitStep<ExecSpace>>, state );
+    if ( state.solver.scheme == TwoPhaseScheme::Seepage )
+        return StepScheme<ExecSpace>(
+            std::in_place_type<SeepageStep<ExecSpace>>, state );
     return StepScheme<ExecSpace>(
         std::in_place_type<ExplicitTwoPhaseStep<ExecSpace>>, state );
 }

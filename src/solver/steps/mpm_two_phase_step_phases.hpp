@@ -8,6 +8,7 @@
 #include <mpm_grid_update_two_phase.hpp>
 #include <mpm_p2g_two_phase.hpp>
 #include <mpm_point_update.hpp>
+#include <mpm_pore_pressure.hpp>
 #include <mpm_timestep.hpp>
 #include <solver/mpm_simulation_state.hpp>
 
@@ -79,6 +80,19 @@ class TwoPhaseStepPhases
         remapVelocityTwoPhase( exec, s.grid, s.water_grid, _momentum_sums,
                                s.conditions.inflow_flux_i, s.water.density );
         baseCellRates( exec, s.base_cells, s.grid, s.water_grid );
+    }
+
+    //! The pore-pressure point update (step 6) of `s`'s points and stage
+    //! conditions with the scheme's increment rule `increment`.
+    template <class Increment>
+    static auto porePressure( const SimulationState<ExecSpace>& s,
+                              const double dt, const Increment& increment )
+    {
+        return porePressurePointUpdate(
+            s.particles, s.water_particles, s.water, dt,
+            s.analysis == AnalysisType::Saturated, s.retention_current,
+            s.conditions.prescribed_p_w, s.conditions.prescribed_hold,
+            s.conditions.inflow_rate, s.conditions.inflow_ponding, increment );
     }
 
     /*!

@@ -1,0 +1,59 @@
+#ifndef MPM_CFL_STEP_HPP
+#define MPM_CFL_STEP_HPP
+
+#include <case/mpm_case_config.hpp>
+#include <mpm_timestep.hpp>
+#include <solver/mpm_simulation_error.hpp>
+
+#include <sstream>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief Time step of a stage: the fixed dt_s of the case, refused if it
+  exceeds the CFL limit, or Courant number times the CFL limit.
+*/
+inline double chooseTimeStep( const SolverConfig& solver,
+                              const WaveSpeedLimit& limit )
+{
+    if ( solver.dt_s <= 0.0 )
+        return solver.courant_number * limit.dt_limit;
+    if ( solver.dt_s > limit.dt_limit )
+    {
+        std::ostringstream msg;
+        msg << "solver.dt_s = " << solver.dt_s << " s exceeds the stable limit "
+            << limit.dt_limit
+            << " s (cell size / (P-wave speed + point speed), largest P-wave "
+               "speed "
+            << limit.max_wave_speed << " m/s); use dt_s <= " << limit.dt_limit
+            << " s or dt_s = 0 for the automatic step";
+        throw SimulationError( msg.str() );
+    }
+    return solver.dt_s;
+}
+
+//---------------------------------------------------------------------------//
+//! What the schemes whose step a wave limits share (StepScheme): they move
+//! the skeleton and take courant_number x their CFL limit, or solver.dt_s
+//! checked against it (chooseTimeStep).
+struct CflStepRule
+{
+    static constexpr bool moves_skeleton = true;
+    static constexpr const char* automatic_step =
+        "automatic: courant_number x cell / (fastest wave speed + point "
+        "speed)";
+    static constexpr const char* fixed_step =
+        "fixed dt_s, checked against the CFL limit";
+
+    //! The next step at the CFL limit `limit` of the state now.
+    template <class State>
+    double nextStep( const State& s, const WaveSpeedLimit& limit ) const
+    {
+        return chooseTimeStep( s.solver, limit );
+    }
+};
+
+} // namespace mpm
+
+#endif // MPM_CFL_STEP_HPP
