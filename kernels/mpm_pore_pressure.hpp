@@ -158,7 +158,7 @@ struct PorePressurePointUpdate
             const PointWaterChange change = increment.water(
                 { point.n, point.S, S_p( q ), point.storage, point.p_w,
                   after.p_w_free, point.volume_change, water_rate[l], source[l],
-                  L[l][0][0] + L[l][1][1], kinematics.dt } );
+                  L[l][0][0] + L[l][1][1], kinematics.dt, q } );
             physics::addPointStepWater(
                 volumes, vol_p( q ), kinematics.dt, source[l],
                 change.flux_divergence, change.volume_change, point.storage,

@@ -33,6 +33,7 @@ struct PointPressureStep
     double source;        //!< the inflow's Eq. 8 source, 1/s
     double div_v_s;       //!< solid divergence, 1/s
     double dt;            //!< step, s
+    int point;            //!< the point's index
 };
 
 //---------------------------------------------------------------------------//
@@ -79,6 +80,12 @@ struct CellPressureIncrement
     UnmanagedView<typename ParticleViews<ExecSpace>::vector_view> x_p;
     physics::GridGeometry grid;
 
+    //! No water in transit adds to the solve's source.
+    KOKKOS_INLINE_FUNCTION double transitSource( const int, const double ) const
+    {
+        return 0.0;
+    }
+
     //! dp = dp_c of point q's cell (0 outside the grid).
     KOKKOS_INLINE_FUNCTION bool given( const int q, double& dp ) const
     {
@@ -97,6 +104,82 @@ struct CellPressureIncrement
                               step.storage * ( step.p_w_free - step.p_w0 );
         return { change,
                  step.source - change / step.dt - step.S0 * step.div_v_s };
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The quasi-static scheme's flow increment (docs/formulation.md §11):
+  the pressure solve's increment dp_c of the point's cell, solved with the
+  fixed-stress storage. Besides what its p_w stores, the point took in
+  its skeleton storage b dp (the water for the swelling of the skeleton the
+  relaxation then makes) and gave up its water in transit (the last
+  relaxation's difference, a source of the solve): the seepage the grid
+  brought is their sum, and b dp V goes to anticipated_p (m^3 per metre).
+*/
+template <class ExecSpace>
+struct FixedStressCellIncrement
+{
+    static constexpr bool needs_water_rate = false;
+    using scalar_view =
+        UnmanagedView<Kokkos::View<double*, DeviceType<ExecSpace>>>;
+
+    CellPressureIncrement<ExecSpace> cell;
+    scalar_view skeleton_storage_p; //!< b, 1/Pa
+    scalar_view transit_p;          //!< water in transit, m^3 per metre
+    scalar_view anticipated_p;      //!< out: b dp V, m^3 per metre
+    scalar_view vol_p;              //!< point volumes, m^3 per metre
+
+    //! The water in transit as a source of the solve over the step dt, 1/s.
+    KOKKOS_INLINE_FUNCTION double transitSource( const int q,
+                                                 const double dt ) const
+    {
+        return transit_p( q ) / ( vol_p( q ) * dt );
+    }
+
+    KOKKOS_INLINE_FUNCTION bool given( const int q, double& dp ) const
+    {
+        return cell.given( q, dp );
+    }
+
+    //! The stored change n (S - S0) + n S0 dp / K_w, and the seepage that
+    //! brought it, the skeleton's b dp and less the water in transit.
+    KOKKOS_INLINE_FUNCTION PointWaterChange
+    water( const PointPressureStep& step ) const
+    {
+        const int q = step.point;
+        const double dp = step.p_w_free - step.p_w0;
+        const double skeleton = skeleton_storage_p( q ) * dp;
+        anticipated_p( q ) = skeleton * vol_p( q );
+        const double change = step.n * ( step.S - step.S0 ) + step.storage * dp;
+        const double brought = change + skeleton - transit_p( q ) / vol_p( q );
+        return { change,
+                 step.source - brought / step.dt - step.S0 * step.div_v_s };
+    }
+};
+
+//---------------------------------------------------------------------------//
+/*!
+  \brief The quasi-static scheme's relaxation (docs/formulation.md §11):
+  every point keeps its p_w while the skeleton moves to equilibrium; the
+  change of its stored water with its pore volume is water in transit,
+  which the scheme books itself (pointWaterInTransit), so the step books none.
+*/
+struct HeldPorePressure
+{
+    static constexpr bool needs_water_rate = false;
+
+    KOKKOS_INLINE_FUNCTION bool given( const int, double& dp ) const
+    {
+        dp = 0.0;
+        return true;
+    }
+
+    //! Nothing stored, nothing brought (the inflow's source balanced).
+    KOKKOS_INLINE_FUNCTION PointWaterChange
+    water( const PointPressureStep& step ) const
+    {
+        return { 0.0, step.source };
     }
 };
 

@@ -86,7 +86,9 @@ void keepPressureStartOnUnknowns( const ExecSpace& exec,
   PorePressureNewton; saturated: n S dp_c / K_w), and the tangent C =
   n dS/dp_w + n S / K_w at p_w + dp_c, summed as V (...) / dt. Each
   point takes only its own cell's dp_c, so the tangent is the exact
-  derivative of the stored water (Newton's). Only the unknown cells'
+  derivative of the stored water (Newton's). With t.skeleton_storage_p
+  set, each point's skeleton storage adds its linear share (the
+  fixed-stress split, docs/formulation.md §11). Only the unknown cells'
   points add (isPressureUnknown).
 */
 template <class ExecSpace, class CellView>
@@ -107,6 +109,8 @@ void newtonStorageSums( const ExecSpace& exec,
     const auto dp = unmanaged( dp_c );
     const auto free_points = unmanaged( t.free_c );
     const auto storage = unmanaged( t.storage_c );
+    const auto skeleton_storage = unmanaged( t.skeleton_storage_p );
+    const bool fixed_stress = t.skeleton_storage_p.extent( 0 ) > 0;
     const double K_w = water.bulk_modulus;
     Kokkos::parallel_for(
         "mpm::pressure_newton_storage",
@@ -138,6 +142,11 @@ void newtonStorageSums( const ExecSpace& exec,
                     RetentionAt{ retention }( p_w + dp_p );
                 stored = physics::storedWaterChange( n, S, state.S, dp_p, K_w );
                 tangent = physics::waterStorage( n, state.S, state.dS_dp, K_w );
+            }
+            if ( fixed_stress )
+            {
+                stored += skeleton_storage( p ) * dp_p;
+                tangent += skeleton_storage( p );
             }
             const double scale = points.vol_p( p ) / dt;
             auto access = handle.access();

@@ -66,6 +66,9 @@ struct PressurePointTerms
     Kokkos::View<double** [8], device_type> g_c;   //!< (k, d) at 2 k + d
     Kokkos::View<double** [8], device_type> g_S_c; //!< as g_c, times S
     Kokkos::View<int**, device_type> free_c;
+    //! The fixed-stress split's skeleton storage of each point, 1/Pa
+    //! (physics::skeletonStorage), added to its water storage; empty: none.
+    Kokkos::View<double*, device_type> skeleton_storage_p;
 
     PressurePointTerms() = default;
     explicit PressurePointTerms( const physics::GridGeometry& grid )
@@ -154,7 +157,8 @@ void pressureNodeTerms( const ExecSpace& exec,
   the same sums on any number of threads. Per point: the right side
   V (source - r*), r* = div q* + S div v_s* the predictor's water volume
   rate (waterDivergenceAt, waterVolumeRate; PredictorVelocity below 1 % of
-  the point's mass), the storage V C (physics::waterStorage), the
+  the point's mass), the storage V C (physics::waterStorage, plus the
+  skeleton's if t.skeleton_storage_p is set), the
   gradients V grad N of the cell's 4 nodes and the same times S. The cells
   the last call filled that hold no points now are zeroed.
 */
@@ -180,6 +184,8 @@ void pressureCellTerms( const ExecSpace& exec,
     const auto g = unmanaged( t.g_c );
     const auto g_S = unmanaged( t.g_S_c );
     const auto free_points = unmanaged( t.free_c );
+    const auto skeleton_storage = unmanaged( t.skeleton_storage_p );
+    const bool fixed_stress = t.skeleton_storage_p.extent( 0 ) > 0;
     const int ny = grid.ny;
     const auto occupied = unmanaged( lists.occupied );
     const auto offset_c = unmanaged( lists.offset_c );
@@ -247,9 +253,11 @@ void pressureCellTerms( const ExecSpace& exec,
                 const double rate =
                     physics::waterVolumeRate( n, S, div_v_w, L );
                 sums[C::rhs] += vol * ( source( p ) - rate );
-                sums[C::storage] += vol * physics::waterStorage(
-                                              n, S, water_points.dS_dp_p( p ),
-                                              water.bulk_modulus );
+                sums[C::storage] +=
+                    vol *
+                    ( physics::waterStorage( n, S, water_points.dS_dp_p( p ),
+                                             water.bulk_modulus ) +
+                      ( fixed_stress ? skeleton_storage( p ) : 0.0 ) );
                 for ( int k = 0; k < 4; ++k )
                 {
                     sums[C::grad_0_x + 2 * k] += vol * dwdx[k];

@@ -288,13 +288,20 @@ int main( int argc, char* argv[] )
         printCheckSummary( config, estimate );
         return 0;
     }
-    // A strength reduction needs a skeleton that can move.
-    if ( fos->parsed() && config.solver.scheme == mpm::TwoPhaseScheme::Seepage )
+    // A strength reduction needs a skeleton that can move and fail.
+    if ( fos->parsed() &&
+         ( config.solver.scheme == mpm::TwoPhaseScheme::Seepage ||
+           config.solver.scheme == mpm::TwoPhaseScheme::QuasiStatic ) )
     {
+        const bool seepage =
+            config.solver.scheme == mpm::TwoPhaseScheme::Seepage;
         std::cerr << config.file
                   << ": error: key 'solver.scheme': rainslide fos needs a "
-                     "scheme that moves the skeleton (\"explicit\" or "
-                     "\"semi_implicit\"), found \"seepage\", which holds it\n";
+                     "dynamic scheme (\"explicit\" or \"semi_implicit\"), "
+                     "found "
+                  << ( seepage ? "\"seepage\", which holds the skeleton\n"
+                               : "\"quasi_static\", which stops when the "
+                                 "soil fails\n" );
         return exit_bad_input;
     }
     if ( fos->parsed() && options.out_dir.empty() )

@@ -334,7 +334,8 @@ enum class TwoPhaseScheme
 {
     Explicit,     //!< Eq. 8 at the points (docs/formulation.md §3)
     SemiImplicit, //!< a cell pressure solve (docs/formulation.md §9)
-    Seepage       //!< the skeleton held, the flow in real time (§10)
+    Seepage,      //!< the skeleton held, the flow in real time (§10)
+    QuasiStatic   //!< the flow in real time, the skeleton relaxed (§11)
 };
 
 struct SolverConfig
@@ -395,6 +396,13 @@ struct SolverConfig
     double seepage_saturation_change = 0.01;
     //! Seepage: the first step, s.
     double seepage_initial_dt_s = 1.0;
+    //! Quasi-static: the skeleton is at rest once its fastest point moves
+    //! slower than this, m/s.
+    double relaxation_speed_m_per_s = 1.0e-6;
+    //! Quasi-static: the most damped steps of one relaxation.
+    double relaxation_max_steps = 20000;
+    //! Quasi-static: the relaxation's least local damping coefficient.
+    double relaxation_damping = 0.7;
     //! Semi-implicit: the pressure solve stops at |r| <= tolerance |b|.
     double pressure_tolerance = 1.0e-10;
     //! Semi-implicit: the most conjugate-gradient iterations of one solve.

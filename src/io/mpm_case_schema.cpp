@@ -8,7 +8,7 @@ namespace Impl
 const std::vector<std::string>& twoPhaseSchemeNames()
 {
     static const std::vector<std::string> names = { "explicit", "semi_implicit",
-                                                    "seepage" };
+                                                    "seepage", "quasi_static" };
     return names;
 }
 
@@ -44,6 +44,12 @@ const std::vector<ConfigKey<SolverConfig>>& solverKeys()
                    Range::interval( 0.0, true, 1.0, false ), "" ),
         numberKey( "seepage_initial_dt_s", &S::seepage_initial_dt_s,
                    Range::above( 0.0 ), "s" ),
+        numberKey( "relaxation_speed_m_per_s", &S::relaxation_speed_m_per_s,
+                   Range::above( 0.0 ), "m/s" ),
+        numberKey( "relaxation_max_steps", &S::relaxation_max_steps,
+                   Range::interval( 1.0, false, 1.0e6, false ), "" ),
+        numberKey( "relaxation_damping", &S::relaxation_damping,
+                   Range::interval( 0.0, false, 1.0, true ), "" ),
         numberKey( "pressure_tolerance", &S::pressure_tolerance,
                    Range::interval( 0.0, true, 1.0, true ),
                    "(relative residual)" ),

@@ -97,7 +97,8 @@ RunEstimate estimateRun( const CaseConfig& config )
     const SolverConfig& s = config.solver;
     // The seepage step is set by the flow as it runs: its first step bounds
     // the estimate (it grows from there while the flow allows).
-    const bool seepage = s.scheme == TwoPhaseScheme::Seepage;
+    const bool seepage = s.scheme == TwoPhaseScheme::Seepage ||
+                         s.scheme == TwoPhaseScheme::QuasiStatic;
     const double dt = s.dt_s > 0.0 ? s.dt_s
                       : seepage    ? s.seepage_initial_dt_s
                                    : s.courant_number * h *
@@ -146,10 +147,11 @@ std::vector<std::string> runRefusals( const CaseConfig& config,
     const bool fixed = config.solver.dt_s > 0.0;
     const std::string dt_source =
         fixed ? "solver.dt_s = " + number( config.solver.dt_s ) + " s"
-        : config.solver.scheme == TwoPhaseScheme::Seepage
+        : config.solver.scheme == TwoPhaseScheme::Seepage ||
+                config.solver.scheme == TwoPhaseScheme::QuasiStatic
             ? "solver.seepage_initial_dt_s = " +
                   number( config.solver.seepage_initial_dt_s ) +
-                  " s, the seepage scheme's first step"
+                  " s, the flow's first step"
             : "solver.courant_number = " +
                   number( config.solver.courant_number ) +
                   " x cell_size_m / P-wave speed " +

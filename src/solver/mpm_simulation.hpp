@@ -16,8 +16,8 @@ namespace mpm
 /*!
   \brief One simulation: its state (SimulationState: points, grid,
   materials, conditions) and the step scheme that advances it, chosen once
-  from the case (makeStepScheme: the dry step, the explicit or the
-  semi-implicit two-phase step; solver/steps).
+  from the case (makeStepScheme: the dry step, the explicit,
+  semi-implicit, seepage or quasi-static two-phase step; solver/steps).
 */
 template <class ExecSpace>
 class Simulation : public SimulationState<ExecSpace>
@@ -37,11 +37,22 @@ class Simulation : public SimulationState<ExecSpace>
         return std::visit( []( const auto& s ) { return s.scheme; }, _scheme );
     }
 
-    //! False if the scheme holds the skeleton (seepage).
-    bool movesSkeleton() const
+    //! True if each of the scheme's steps ends at rest (seepage,
+    //! quasi-static).
+    bool endsAtRest() const
     {
-        return std::visit( []( const auto& s ) { return s.moves_skeleton; },
+        return std::visit( []( const auto& s ) { return s.ends_at_rest; },
                            _scheme );
+    }
+
+    //! Water held by the points now, the scheme's water in transit among
+    //! the active points' (zero in a dry scene).
+    WaterContent waterContent() const
+    {
+        WaterContent content = SimulationState<ExecSpace>::waterContent();
+        content.active += std::visit(
+            []( const auto& s ) { return s.waterInTransit(); }, _scheme );
+        return content;
     }
 
     //! How the scheme chooses its step (solver.dt_s fixed or not).
@@ -71,11 +82,18 @@ class Simulation : public SimulationState<ExecSpace>
                            _scheme );
     }
 
-    //! The pressure solves so far (semi-implicit), else null.
+    //! The pressure solves so far (the schemes with one), else null.
     const PressureSolveStats* pressureSolveStats() const
     {
         return std::visit(
             []( const auto& s ) { return s.pressureSolveStats(); }, _scheme );
+    }
+
+    //! The relaxations so far (quasi-static), else null.
+    const RelaxationStats* relaxationStats() const
+    {
+        return std::visit( []( const auto& s ) { return s.relaxationStats(); },
+                           _scheme );
     }
 
     //! CFL limit (Courant number 1) and the largest wave speed of the

@@ -121,16 +121,22 @@ TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
 }
 
 // A strength reduction on a held skeleton would never fail: refused.
-TEST( Cli, fos_refuses_the_seepage_scheme )
+TEST( Cli, fos_refuses_the_seepage_and_quasi_static_schemes )
 {
-    const fs::path dir = mpm_test::freshTempDir( "fos_seepage" );
-    const auto result = runCommand(
-        "fos " + std::string( RAINSLIDE_CASES_DIR ) + "/terzaghi.toml --out " +
-        ( dir / "out" ).string() + " --set 'solver.scheme=\"seepage\"'" );
-    mpm_test::expectExit( result, 2,
-                          "key 'solver.scheme': rainslide fos needs a scheme "
-                          "that moves the skeleton" );
-    EXPECT_FALSE( fs::exists( dir / "out" ) );
+    for ( const std::string scheme : { "seepage", "quasi_static" } )
+    {
+        const fs::path dir = mpm_test::freshTempDir( "fos_" + scheme );
+        const auto result =
+            runCommand( "fos " + std::string( RAINSLIDE_CASES_DIR ) +
+                        "/terzaghi.toml --out " + ( dir / "out" ).string() +
+                        " --set 'solver.scheme=\"" + scheme + "\"'" );
+        mpm_test::expectExit( result, 2,
+                              "key 'solver.scheme': rainslide fos needs a "
+                              "dynamic scheme (\"explicit\" or "
+                              "\"semi_implicit\"), found \"" +
+                                  scheme + "\"" );
+        EXPECT_FALSE( fs::exists( dir / "out" ) );
+    }
 }
 
 TEST( Cli, unstable_run_stops_with_a_diagnosis_and_readable_output )

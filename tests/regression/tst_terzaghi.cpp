@@ -1,6 +1,7 @@
 #include <mpm_terzaghi_error.hpp>
 #include <mpm_test_backends.hpp>
 #include <mpm_test_cases.hpp>
+#include <mpm_test_time_probe.hpp>
 
 #include <solver/drivers/mpm_run_stages.hpp>
 
@@ -13,28 +14,6 @@
 namespace
 {
 MPM_TEST_BACKEND_SUITE( Terzaghi );
-
-//! Captures snapshots at given stage times.
-template <class ExecSpace>
-class TimeProbe : public mpm::RunObserver
-{
-  public:
-    TimeProbe( const mpm::Simulation<ExecSpace>& sim,
-               std::vector<double> probe_times )
-        : _sim( sim )
-        , times( std::move( probe_times ) )
-    {
-    }
-    void onStep( const mpm::RunProgress& progress ) override
-    {
-        while ( snapshots.size() < times.size() &&
-                progress.stage_time_s >= times[snapshots.size()] )
-            snapshots.push_back( mpm::hostSnapshot( _sim ) );
-    }
-    const mpm::Simulation<ExecSpace>& _sim;
-    std::vector<double> times;
-    std::vector<mpm::HostSnapshot> snapshots;
-};
 
 //! Relative L2 errors of the isochrones that a Terzaghi run may reach.
 struct TerzaghiTolerance
@@ -64,7 +43,7 @@ long terzaghiIsochrones( const mpm::TwoPhaseScheme scheme,
     config.solver.scheme = scheme;
 
     mpm::Simulation<ExecSpace> sim( config );
-    TimeProbe<ExecSpace> probe( sim, times );
+    mpm_test::TimeProbe<ExecSpace> probe( sim, times );
     mpm::runStages( sim, config, probe );
     EXPECT_EQ( probe.snapshots.size(), Tv.size() );
 

@@ -280,6 +280,9 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
         metrics["pressure_solve"] =
             pressureSolveMetrics( config.solver, *solves );
+    if ( const RelaxationStats* relaxations = sim.relaxationStats() )
+        metrics["relaxation"] =
+            relaxationMetrics( config.solver, *relaxations );
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );

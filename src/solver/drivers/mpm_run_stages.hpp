@@ -243,9 +243,9 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
                 state.next_snapshot_s = schedule.next( progress.stage_time_s );
             }
 
-            // A held skeleton has nothing to settle: such a stage runs its
-            // duration (its flow is real time).
-            if ( quasi_static && sim.movesSkeleton() )
+            // A scheme whose steps end at rest has nothing to settle: such a
+            // stage runs its duration (its flow is real time).
+            if ( quasi_static && !sim.endsAtRest() )
             {
                 state.ke_max =
                     std::max( state.ke_max, progress.kinetic_energy_j );
@@ -283,10 +283,10 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             }
         }
 
-        if ( quasi_static && !sim.movesSkeleton() && !summary.interrupted )
+        if ( quasi_static && sim.endsAtRest() && !summary.interrupted )
         {
             stage_summary.converged = true;
-            stage_summary.stop_reason = "duration (the skeleton is held)";
+            stage_summary.stop_reason = "duration (each step ends at rest)";
         }
         stage_summary.steps = progress.stage_step;
         stage_summary.duration_s = progress.stage_time_s;

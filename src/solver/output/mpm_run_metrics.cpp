@@ -46,4 +46,24 @@ nlohmann::json pressureSolveMetrics( const SolverConfig& solver,
              { "picard_unbalanced_water_m3_per_m", solves.unbalanced_water } };
 }
 
+//---------------------------------------------------------------------------//
+nlohmann::json relaxationMetrics( const SolverConfig& solver,
+                                  const RelaxationStats& relaxations )
+{
+    return { { "method", "damped two-phase steps at the skeleton's CFL "
+                         "limit, each point's p_w held, until the fastest "
+                         "point is slower than the rest speed" },
+             { "rest_speed_m_per_s", solver.relaxation_speed_m_per_s },
+             { "damping", solver.relaxation_damping },
+             { "max_steps_allowed",
+               static_cast<long>( solver.relaxation_max_steps ) },
+             { "relaxations", relaxations.relaxations },
+             { "steps_total", relaxations.steps },
+             { "steps_mean", relaxations.relaxations > 0
+                                 ? double( relaxations.steps ) /
+                                       double( relaxations.relaxations )
+                                 : 0.0 },
+             { "steps_max", relaxations.max_steps } };
+}
+
 } // namespace mpm

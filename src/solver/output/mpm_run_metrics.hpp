@@ -3,6 +3,7 @@
 
 #include <case/mpm_case_config.hpp>
 #include <solver/steps/mpm_pressure_solve_stats.hpp>
+#include <solver/steps/mpm_skeleton_relaxation.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,11 @@ nlohmann::json timeStepMetrics( const SolverConfig& solver,
 //! final residuals left unbalanced).
 nlohmann::json pressureSolveMetrics( const SolverConfig& solver,
                                      const PressureSolveStats& solves );
+
+//! metrics.json's `relaxation`: the quasi-static scheme's relaxation
+//! settings and what its relaxations of the skeleton did.
+nlohmann::json relaxationMetrics( const SolverConfig& solver,
+                                  const RelaxationStats& relaxations );
 
 } // namespace mpm
 

@@ -14,22 +14,24 @@ namespace mpm
 /*!
   \brief Step 2b of the schemes with a pressure solve (docs/formulation.md
   §9): each cell's pressure increment of Eq. 8 at the new time and the nodal
-  velocities it corrects (PressureProjection::correct, the points' inflow as
-  its source). Returns the pore-pressure point update that gives each point
-  its cell's increment in the point loop (CellPressureIncrement).
+  velocities it corrects (PressureProjection::correct, the points' inflow
+  and the rule's water in transit as its source). Returns the pore-pressure
+  point update that gives each point its cell's increment in the point
+  loop with the rule `increment` (CellPressureIncrement, or
+  FixedStressCellIncrement).
 */
-template <class ExecSpace>
+template <class ExecSpace, class Increment>
 auto solveCellPressures( const ExecSpace& exec, SimulationState<ExecSpace>& s,
                          const double dt, TwoPhaseStepPhases<ExecSpace>& phases,
-                         PressureProjection<ExecSpace>& projection )
+                         PressureProjection<ExecSpace>& projection,
+                         const Increment& increment )
 {
-    const auto pore_pressure = TwoPhaseStepPhases<ExecSpace>::porePressure(
-        s, dt,
-        CellPressureIncrement<ExecSpace>{ s.water_grid.dp_w_c, s.particles.x_p,
-                                          s.grid.geometry } );
+    const auto pore_pressure =
+        TwoPhaseStepPhases<ExecSpace>::porePressure( s, dt, increment );
     const auto source = KOKKOS_LAMBDA( const int q )
     {
-        return pore_pressure.inflowSource( q, pore_pressure.inflow_p( q ) );
+        return pore_pressure.inflowSource( q, pore_pressure.inflow_p( q ) ) +
+               pore_pressure.increment.transitSource( q, dt );
     };
     projection.correct(
         exec, s.particles, s.water_particles, s.grid, s.water_grid, s.materials,
@@ -38,6 +40,19 @@ auto solveCellPressures( const ExecSpace& exec, SimulationState<ExecSpace>& s,
         pressureSolveSettings( s.solver ), phases.cellLists(), s.step + 1,
         s.time );
     return pore_pressure;
+}
+
+//! solveCellPressures with each point taking its cell's increment
+//! (CellPressureIncrement).
+template <class ExecSpace>
+auto solveCellPressures( const ExecSpace& exec, SimulationState<ExecSpace>& s,
+                         const double dt, TwoPhaseStepPhases<ExecSpace>& phases,
+                         PressureProjection<ExecSpace>& projection )
+{
+    return solveCellPressures(
+        exec, s, dt, phases, projection,
+        CellPressureIncrement<ExecSpace>{ s.water_grid.dp_w_c, s.particles.x_p,
+                                          s.grid.geometry } );
 }
 
 } // namespace mpm

@@ -4,6 +4,7 @@
 #include <case/mpm_case_config.hpp>
 #include <mpm_timestep.hpp>
 #include <solver/mpm_simulation_error.hpp>
+#include <solver/steps/mpm_skeleton_relaxation.hpp>
 
 #include <sstream>
 
@@ -34,12 +35,13 @@ inline double chooseTimeStep( const SolverConfig& solver,
 }
 
 //---------------------------------------------------------------------------//
-//! What the schemes whose step a wave limits share (StepScheme): they move
-//! the skeleton and take courant_number x their CFL limit, or solver.dt_s
-//! checked against it (chooseTimeStep).
+//! What the schemes whose step a wave limits share (StepScheme): their
+//! steps do not end at rest (a quasi-static stage damps them to rest), they
+//! take courant_number x their CFL limit, or solver.dt_s checked against it
+//! (chooseTimeStep), and keep no water in transit.
 struct CflStepRule
 {
-    static constexpr bool moves_skeleton = true;
+    static constexpr bool ends_at_rest = false;
     static constexpr const char* automatic_step =
         "automatic: courant_number x cell / (fastest wave speed + point "
         "speed)";
@@ -52,6 +54,10 @@ struct CflStepRule
     {
         return chooseTimeStep( s.solver, limit );
     }
+
+    //! No water in transit, no relaxation.
+    double waterInTransit() const { return 0.0; }
+    const RelaxationStats* relaxationStats() const { return nullptr; }
 };
 
 } // namespace mpm

@@ -82,6 +82,14 @@ class PressureProjection
 
     const PressureSolveStats& stats() const { return _stats; }
 
+    //! Each point's skeleton storage (1/Pa) joins its water storage in the
+    //! solves (the fixed-stress split, QuasiStaticStep).
+    void setSkeletonStorage(
+        const Kokkos::View<double*, DeviceType<ExecSpace>>& skeleton_storage_p )
+    {
+        _terms.skeleton_storage_p = skeleton_storage_p;
+    }
+
     /*!
       \brief Solves the step's pressure increments and corrects the nodal
       velocities of both phases (gv.v_i, dv_i, wg.v_w_i, dv_w_i). The

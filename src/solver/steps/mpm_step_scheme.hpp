@@ -5,6 +5,7 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_dry_step.hpp>
 #include <solver/steps/mpm_explicit_two_phase_step.hpp>
+#include <solver/steps/mpm_quasi_static_step.hpp>
 #include <solver/steps/mpm_seepage_step.hpp>
 #include <solver/steps/mpm_semi_implicit_step.hpp>
 
@@ -25,8 +26,11 @@ namespace mpm
     speed of its fastest wave on the points now, of the real (not
     inertia-scaled) system;
   - `pressureSolveStats()`: its pressure solves, or null;
-  - `moves_skeleton`: false if it holds the skeleton (a quasi-static stage
-    then has nothing to settle);
+  - `relaxationStats()`: its relaxations of the skeleton, or null;
+  - `waterInTransit()`: the water it has taken in and not yet given to the
+    points, m^3 per metre (QuasiStaticStep);
+  - `ends_at_rest`: true if each step ends at rest (a quasi-static stage
+    then has nothing to settle and runs its duration);
   - `scheme`, `automatic_step`, `fixed_step` and `limiting_wave`: its name
     as the case file writes it, how it chooses its step (without and with
     solver.dt_s) and the wave that limits its step.
@@ -34,10 +38,12 @@ namespace mpm
 template <class ExecSpace>
 using StepScheme =
     std::variant<DryStep<ExecSpace>, ExplicitTwoPhaseStep<ExecSpace>,
-                 SemiImplicitStep<ExecSpace>, SeepageStep<ExecSpace>>;
+                 SemiImplicitStep<ExecSpace>, SeepageStep<ExecSpace>,
+                 QuasiStaticStep<ExecSpace>>;
 
 //! The scheme of `state`'s scene and [solver] scheme: the dry step for a
-//! dry scene, else the explicit, semi-implicit or seepage two-phase step.
+//! dry scene, else the explicit, semi-implicit, seepage or quasi-static
+//! two-phase step.
 template <class ExecSpace>
 StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
 {
@@ -50,6 +56,9 @@ StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
     if ( state.solver.scheme == TwoPhaseScheme::Seepage )
         return StepScheme<ExecSpace>(
             std::in_place_type<SeepageStep<ExecSpace>>, state );
+    if ( state.solver.scheme == TwoPhaseScheme::QuasiStatic )
+        return StepScheme<ExecSpace>(
+            std::in_place_type<QuasiStaticStep<ExecSpace>>, state );
     return StepScheme<ExecSpace>(
         std::in_place_type<ExplicitTwoPhaseStep<ExecSpace>>, state );
 }

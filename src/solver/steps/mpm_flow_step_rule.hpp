@@ -1,0 +1,73 @@
+#ifndef MPM_FLOW_STEP_RULE_HPP
+#define MPM_FLOW_STEP_RULE_HPP
+
+#include <case/mpm_case_config.hpp>
+#include <mpm_timestep.hpp>
+#include <solver/mpm_simulation_error.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace mpm
+{
+//---------------------------------------------------------------------------//
+/*!
+  \brief What the schemes whose step the flow sets share (StepScheme: the
+  seepage and quasi-static schemes): after a step dt in which the largest
+  change of a point's saturation was dS, the next is dt
+  solver.seepage_saturation_change / dS, at most twice the last one
+  (solver.seepage_initial_dt_s first; a fixed solver.dt_s if given). A
+  step below min_step_s stops the run. Each of their steps ends at rest:
+  a quasi-static stage runs its duration.
+*/
+class FlowStepRule
+{
+  public:
+    static constexpr bool ends_at_rest = true;
+    static constexpr const char* automatic_step =
+        "automatic: the last step x solver.seepage_saturation_change / its "
+        "largest saturation change, at most twice the last";
+    static constexpr const char* fixed_step = "fixed dt_s";
+    //! The shortest step the flow may ask for before the run stops, s.
+    static constexpr double min_step_s = 1.0e-6;
+
+    explicit FlowStepRule( const SolverConfig& solver )
+        : _next_dt( solver.seepage_initial_dt_s )
+    {
+    }
+
+    //! The next step: solver.dt_s if fixed, else the flow's.
+    template <class State>
+    double nextStep( const State& s, const WaveSpeedLimit& ) const
+    {
+        return s.solver.dt_s > 0.0 ? s.solver.dt_s : _next_dt;
+    }
+
+  protected:
+    //! The next step after a step dt that changed a free point's saturation
+    //! by `change` at most (the `scheme`'s step names it if it stops).
+    void chooseNextStep( const SolverConfig& solver, const double dt,
+                         const double change, const char* scheme )
+    {
+        const double allowed =
+            change > 0.0 ? dt * solver.seepage_saturation_change / change
+                         : 2.0 * _next_dt;
+        _next_dt = std::min( allowed, 2.0 * std::max( dt, _next_dt ) );
+        if ( solver.dt_s > 0.0 || _next_dt >= min_step_s )
+            return;
+        std::ostringstream what;
+        what << "the " << scheme << " step fell to " << _next_dt << " s, below "
+             << min_step_s << " s: a step of " << dt
+             << " s changed a point's saturation by " << change
+             << " (solver.seepage_saturation_change = "
+             << solver.seepage_saturation_change << ")";
+        throw SimulationError( what.str() );
+    }
+
+  private:
+    double _next_dt; //!< s
+};
+
+} // namespace mpm
+
+#endif // MPM_FLOW_STEP_RULE_HPP
