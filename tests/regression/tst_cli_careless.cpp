@@ -61,9 +61,10 @@ pid_t spawnRainslide( const std::string& args, const fs::path& log,
     return pid;
 }
 
-//! True once process `pid` catches SIGINT (its handler is installed), or
-//! false after `timeout_s`.
-bool waitForHandler( const pid_t pid, const double timeout_s )
+//! True once the /proc/<pid>/status mask `field` ("SigCgt:" caught,
+//! "SigIgn:" ignored) holds SIGINT, or false after `timeout_s`.
+bool waitForSigint( const pid_t pid, const std::string& field,
+                    const double timeout_s )
 {
     const auto end = std::chrono::steady_clock::now() +
                      std::chrono::duration<double>( timeout_s );
@@ -72,8 +73,8 @@ bool waitForHandler( const pid_t pid, const double timeout_s )
         std::ifstream status( "/proc/" + std::to_string( pid ) + "/status" );
         std::string line;
         while ( std::getline( status, line ) )
-            if ( line.rfind( "SigCgt:", 0 ) == 0 &&
-                 ( std::stoull( line.substr( 7 ), nullptr, 16 ) &
+            if ( line.rfind( field, 0 ) == 0 &&
+                 ( std::stoull( line.substr( field.size() ), nullptr, 16 ) &
                    ( 1ull << ( SIGINT - 1 ) ) ) )
                 return true;
         std::this_thread::sleep_for( std::chrono::milliseconds( 2 ) );
@@ -236,7 +237,7 @@ TEST( CliCareless, interrupt_during_set_up_exits_130 )
     const pid_t pid = spawnRainslide(
         mpm_test::runArgs( file, out, " --quiet" ), dir / "run.log" );
     ASSERT_GT( pid, 0 );
-    waitForHandler( pid, 0.5 );
+    waitForSigint( pid, "SigCgt:", 0.5 );
     ::kill( pid, SIGINT );
     int status = 0;
     ::waitpid( pid, &status, 0 );
@@ -260,6 +261,8 @@ TEST( CliCareless, inherited_ignored_sigint_stays_ignored )
         spawnRainslide( mpm_test::runArgs( file, dir / "out", " --quiet" ),
                         dir / "run.log", true );
     ASSERT_GT( pid, 0 );
+    // The child ignores SIGINT before it starts rainslide.
+    ASSERT_TRUE( waitForSigint( pid, "SigIgn:", 5.0 ) );
     int status = 0;
     int signals = 0;
     while ( ::waitpid( pid, &status, WNOHANG ) == 0 )

@@ -81,7 +81,7 @@ std::vector<Target> targets( const mpm::Checkpoint& c )
     };
     add( "conditions/load_counts", true, !c.load_counts.empty(),
          []( mpm::Checkpoint& x, double v ) { x.load_counts[0] = int( v ); } );
-    add( "load_groups", true, !c.load_groups.empty(),
+    add( "conditions/load_group_members", true, !c.load_groups.empty(),
          []( mpm::Checkpoint& x, double v )
          { x.load_groups[0][0] = int( v ); } );
     add( "conditions/inflow_volumes", false, !c.inflow_volumes.empty(),
@@ -154,7 +154,8 @@ SweepCounts sweep( const std::string& name, const std::string& text,
                 ++counts.refused;
                 continue;
             }
-            bool finite = result.exit_code == 0;
+            bool finite =
+                result.exit_code == 0 && fs::exists( again / "particles.h5" );
             for ( const char* field : { "x", "stress" } )
                 for ( const double v : mpm_test::lastSnapshotField(
                           again / "particles.h5", field ) )
