@@ -10,12 +10,14 @@
 //          [--max-snapshots N], the budget of the run estimate)
 #include <io/mpm_case_reader.hpp>
 #include <io/mpm_output_folder.hpp>
+#include <io/mpm_output_lock.hpp>
 #include <mpm_config.hpp>
 #include <setup/mpm_case_check.hpp>
 #include <setup/mpm_run_estimate.hpp>
 #include <solver/drivers/mpm_fos_history.hpp>
 #include <solver/drivers/mpm_fos_run.hpp>
 #include <solver/drivers/mpm_run_case.hpp>
+#include <solver/output/mpm_progress.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -70,6 +72,24 @@ int runWithKokkos( const mpm::CaseConfig& config, mpm::RunOptions options,
         break;
     }
     return exit_failed;
+}
+
+//! The refusal of `check` for what `run` refuses before its first step
+//! (firstStepRefusal on the Serial backend), "" if none.
+std::string checkFirstStep( const mpm::CaseConfig& config )
+{
+    Kokkos::InitArguments args;
+    args.num_threads = 1;
+    args.disable_warnings = true;
+    Kokkos::ScopeGuard guard( args );
+    return mpm::firstStepRefusal<Kokkos::Serial>( config );
+}
+
+//! Interrupted before the run started: nothing was written.
+int interruptedInSetUp()
+{
+    std::cerr << "rainslide: interrupted during set-up; nothing was written\n";
+    return exit_interrupted;
 }
 
 void printCheckSummary( const mpm::CaseConfig& config,
@@ -175,6 +195,9 @@ void addFosOptions( CLI::App& command, mpm::FosOptions& fos )
 
 int main( int argc, char* argv[] )
 {
+    // First: Ctrl-C during set-up then ends with exit 130 (an inherited
+    // "ignore" of a background job stays).
+    mpm::installInterruptHandler();
     CLI::App app{ "rainslide " RAINSLIDE_VERSION
                   ": two-phase material point simulator of rainfall-induced "
                   "slope failure" };
@@ -283,8 +306,21 @@ int main( int argc, char* argv[] )
     if ( check->parsed() )
         for ( const std::string& warning : case_check.point_warnings )
             std::cerr << config.file << ": warning: " << warning << "\n";
+    if ( mpm::interruptRequested() )
+        return interruptedInSetUp();
     if ( check->parsed() )
     {
+        // What a run refuses once the simulation is built (the points
+        // generated: a case too large for the point checks skips it).
+        const std::string refusal =
+            case_check.points_checked ? checkFirstStep( config ) : "";
+        if ( mpm::interruptRequested() )
+            return interruptedInSetUp();
+        if ( !refusal.empty() )
+        {
+            std::cerr << config.file << ": error: " << refusal << "\n";
+            return exit_bad_input;
+        }
         printCheckSummary( config, estimate );
         return 0;
     }
@@ -314,20 +350,30 @@ int main( int argc, char* argv[] )
     }
     if ( options.out_dir.empty() )
         options.out_dir = "results/" + config.name;
-    if ( const std::string unsafe = mpm::unsafeOutputFolder( options.out_dir );
-         !unsafe.empty() )
-    {
-        std::cerr << "rainslide: error: --out '" << options.out_dir
-                  << "': " << unsafe << "\n";
-        return exit_bad_input;
-    }
+    for ( const std::string& unsafe :
+          { mpm::unsafeOutputFolder( options.out_dir ),
+            mpm::caseFilesInOutputFolder( options.out_dir, config.file ) } )
+        if ( !unsafe.empty() )
+        {
+            std::cerr << "rainslide: error: --out '" << options.out_dir
+                      << "': " << unsafe << "\n";
+            return exit_bad_input;
+        }
     options.progress = !quiet;
     try
     {
+        const mpm::OutputLock lock( options.out_dir );
+        if ( mpm::interruptRequested() )
+            return interruptedInSetUp();
         return runWithKokkos( config, options,
                               fos->parsed() ? &fos_options : nullptr );
     }
-    catch ( const mpm::RestartError& error )
+    catch ( const mpm::OutputFolderError& error )
+    {
+        std::cerr << "rainslide: error: " << error.what() << "\n";
+        return exit_bad_input;
+    }
+    catch ( const mpm::RunRefused& error )
     {
         std::cerr << "rainslide: error: " << error.what() << "\n";
         return exit_bad_input;

@@ -336,22 +336,27 @@ class Diagnostics
                      text };
     }
 
-    //! Entries sorted: the case file first, then included files, each by
-    //! line and column.
+    //! Entries sorted: the --set overrides first (an error there causes
+    //! the errors it leads to elsewhere, e.g. an unknown material name),
+    //! then the case file, then included files, each by line and column.
     std::vector<Entry> inFileOrder( std::vector<Entry> sorted ) const
     {
-        std::stable_sort( sorted.begin(), sorted.end(),
-                          [this]( const Entry& a, const Entry& b )
-                          {
-                              const bool a_main = a.file == _file_name;
-                              const bool b_main = b.file == _file_name;
-                              if ( a_main != b_main )
-                                  return a_main;
-                              if ( a.file != b.file )
-                                  return a.file < b.file;
-                              return a.line != b.line ? a.line < b.line
-                                                      : a.column < b.column;
-                          } );
+        std::stable_sort(
+            sorted.begin(), sorted.end(),
+            [this]( const Entry& a, const Entry& b )
+            {
+                const bool a_set = a.file.rfind( "--set ", 0 ) == 0;
+                const bool b_set = b.file.rfind( "--set ", 0 ) == 0;
+                if ( a_set != b_set )
+                    return a_set;
+                const bool a_main = a.file == _file_name;
+                const bool b_main = b.file == _file_name;
+                if ( a_main != b_main )
+                    return a_main;
+                if ( a.file != b.file )
+                    return a.file < b.file;
+                return a.line != b.line ? a.line < b.line : a.column < b.column;
+            } );
         return sorted;
     }
 

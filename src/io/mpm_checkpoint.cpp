@@ -349,15 +349,28 @@ Checkpoint readCheckpoint( const std::string& path )
     const auto members =
         readVector<int>( h5, conditions, "load_group_members" );
     std::size_t at = 0;
-    for ( const int size : sizes )
+    for ( std::size_t g = 0; g < sizes.size(); ++g )
     {
+        const int size = sizes[g];
         if ( size < 0 || at + size > members.size() )
-            throw std::runtime_error( "checkpoint '" + path +
-                                      "': inconsistent load groups" );
+            throw std::runtime_error(
+                "checkpoint '" + path + "': conditions/load_group_sizes[" +
+                std::to_string( g ) +
+                "]: expected group sizes >= 0 that add up to the length of "
+                "conditions/load_group_members, " +
+                std::to_string( members.size() ) + ", found " +
+                std::to_string( size ) );
         c.load_groups.emplace_back( members.begin() + at,
                                     members.begin() + at + size );
         at += size;
     }
+    if ( at != members.size() )
+        throw std::runtime_error(
+            "checkpoint '" + path +
+            "': conditions/load_group_sizes: expected group sizes that add "
+            "up to the length of conditions/load_group_members, " +
+            std::to_string( members.size() ) + ", found a sum of " +
+            std::to_string( at ) );
     c.inflow_volumes = readVector<double>( h5, conditions, "inflow_volumes" );
     c.inflow_lengths_m =
         readVector<double>( h5, conditions, "inflow_lengths_m" );

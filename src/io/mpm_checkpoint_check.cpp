@@ -1,4 +1,5 @@
 #include <io/mpm_checkpoint_check.hpp>
+#include <io/mpm_checkpoint_values.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,16 +20,62 @@ std::string intOutside( const CheckpointArray& a, const long lo, const long hi )
     return "";
 }
 
-bool startsWith( const std::string& text, const std::string& prefix )
+//! Why the point conditions of the checkpoint's stage do not fit its points
+//! (num_inflows: the stage's inflows), or "".
+std::string conditionsError( const Checkpoint& c, const long num_inflows )
 {
-    return text.rfind( prefix, 0 ) == 0;
+    // Each load's count of points: the points whose group holds it.
+    const CheckpointArray* load_p = c.find( "particles/load_p" );
+    for ( std::size_t l = 0; l < c.load_counts.size(); ++l )
+    {
+        long count = 0;
+        if ( load_p )
+            for ( const int g : load_p->integers )
+                if ( g >= 0 && g < static_cast<long>( c.load_groups.size() ) &&
+                     std::count( c.load_groups[g].begin(),
+                                 c.load_groups[g].end(), int( l ) ) > 0 )
+                    ++count;
+        if ( c.load_counts[l] != count )
+            return "conditions/load_counts[" + std::to_string( l ) +
+                   "]: expected the number of points carrying load " +
+                   std::to_string( l ) + " in particles/load_p, " +
+                   std::to_string( count ) + ", found " +
+                   std::to_string( c.load_counts[l] );
+    }
+    const CheckpointArray* inflow_p = c.find( "water/inflow_p" );
+    const auto fed = [&]( const long f )
+    {
+        return inflow_p && std::count( inflow_p->integers.begin(),
+                                       inflow_p->integers.end(), int( f ) ) > 0;
+    };
+    for ( std::size_t f = 0; f < c.inflow_volumes.size(); ++f )
+    {
+        const double v = c.inflow_volumes[f];
+        const bool points = static_cast<long>( f ) < num_inflows && fed( f );
+        if ( !std::isfinite( v ) || v < 0.0 || ( points && !( v > 0.0 ) ) )
+            return "conditions/inflow_volumes[" + std::to_string( f ) +
+                   "]: expected the volume of the inflow's points, finite " +
+                   ( points ? "and > 0" : "and >= 0" ) + " m^3, found " +
+                   Impl::valueText( v );
+    }
+    for ( std::size_t f = 0; f < c.inflow_lengths_m.size(); ++f )
+        if ( !std::isfinite( c.inflow_lengths_m[f] ) ||
+             c.inflow_lengths_m[f] < 0.0 )
+            return "conditions/inflow_lengths_m[" + std::to_string( f ) +
+                   "]: expected a finite length >= 0 m, found " +
+                   Impl::valueText( c.inflow_lengths_m[f] );
+    if ( !( c.next_surface_update_s >= 0.0 ) )
+        return "conditions/next_surface_update_s: expected a time >= 0 s, "
+               "found " +
+               Impl::valueText( c.next_surface_update_s );
+    return "";
 }
 
 } // namespace
 
 //---------------------------------------------------------------------------//
-std::string checkpointRangeError( const Checkpoint& c,
-                                  const CaseConfig& config )
+std::string checkpointRangeError( const Checkpoint& c, const CaseConfig& config,
+                                  const Impl::StateBounds& bounds )
 {
     auto bad = []( const double v ) { return !std::isfinite( v ) || v < 0.0; };
     const long n = c.identity.num_points;
@@ -64,8 +111,8 @@ std::string checkpointRangeError( const Checkpoint& c,
     for ( std::size_t g = 0; g < c.load_groups.size(); ++g )
         for ( const int l : c.load_groups[g] )
             if ( l < 0 || l >= num_loads )
-                return "load_groups[" + std::to_string( g ) +
-                       "]: expected load indices in 0.." +
+                return "conditions/load_group_members (group " +
+                       std::to_string( g ) + "): expected load indices in 0.." +
                        std::to_string( num_loads - 1 ) + ", found " +
                        std::to_string( l );
     for ( const CheckpointArray& a : c.arrays )
@@ -84,18 +131,11 @@ std::string checkpointRangeError( const Checkpoint& c,
             error = intOutside( a, -1, num_inflows );
         if ( !error.empty() )
             return error;
-        if ( !startsWith( a.name, "particles/" ) &&
-             !startsWith( a.name, "water/" ) )
-            continue;
-        const auto it = std::find_if( a.reals.begin(), a.reals.end(),
-                                      []( const double v )
-                                      { return !std::isfinite( v ); } );
-        if ( it != a.reals.end() )
-            return a.name + "[" + std::to_string( it - a.reals.begin() ) +
-                   "]: expected a finite number, found " +
-                   std::to_string( *it );
     }
-    return "";
+    if ( std::string error = Impl::stateValueError( c, config, bounds );
+         !error.empty() )
+        return error;
+    return conditionsError( c, num_inflows );
 }
 
 } // namespace mpm

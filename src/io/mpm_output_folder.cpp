@@ -42,4 +42,30 @@ std::string unsafeOutputFolder( const std::string& out_dir )
     return "";
 }
 
+//---------------------------------------------------------------------------//
+std::string caseFilesInOutputFolder( const std::string& out_dir,
+                                     const std::string& case_file )
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder = fs::weakly_canonical( fs::absolute( out_dir ), ec );
+    if ( ec )
+        return "";
+    const fs::path case_folder =
+        fs::weakly_canonical( fs::absolute( case_file ), ec ).parent_path();
+    const std::string expected =
+        "expected a folder of its own for the results, found ";
+    if ( !ec && folder == case_folder )
+        return expected + "the folder of the case file '" + case_file + "' ('" +
+               folder.string() + "')";
+    if ( !fs::is_directory( folder, ec ) )
+        return "";
+    for ( fs::directory_iterator it( folder, ec ), end; !ec && it != end;
+          it.increment( ec ) )
+        if ( it->path().extension() == ".toml" )
+            return expected + "a folder that holds case files ('" +
+                   it->path().string() + "')";
+    return "";
+}
+
 } // namespace mpm

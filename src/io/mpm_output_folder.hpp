@@ -15,6 +15,16 @@ namespace mpm
 */
 std::string unsafeOutputFolder( const std::string& out_dir );
 
+//---------------------------------------------------------------------------//
+/*!
+  \brief Why out_dir must not receive the results of the case `case_file`
+  (the run's files would lie among case files), or "" if it may: it is the
+  case file's own folder, or it holds a case file (*.toml). Symlinks are
+  resolved first.
+*/
+std::string caseFilesInOutputFolder( const std::string& out_dir,
+                                     const std::string& case_file );
+
 } // namespace mpm
 
 #endif // MPM_OUTPUT_FOLDER_HPP

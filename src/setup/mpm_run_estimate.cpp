@@ -18,6 +18,9 @@ constexpr double node_bytes_dry = 400.0;
 constexpr double node_bytes_water = 400.0;
 constexpr double snapshot_point_bytes_dry = 17 * 8 + 3 * 4;
 constexpr double snapshot_point_bytes_water = 6 * 8;
+// A row of probes.csv: time, stage, name, id and the probed fields at nine
+// digits (about 140 bytes).
+constexpr double probe_row_bytes = 160.0;
 
 // More steps than this never end (1e12 steps of 1 us are 11 days).
 constexpr double max_possible_steps = 1.0e12;
@@ -119,6 +122,12 @@ RunEstimate estimateRun( const CaseConfig& config )
                        : std::numeric_limits<double>::infinity();
         e.steps += st.steps;
         e.snapshots += st.snapshots;
+        if ( config.probes.interval_s > 0.0 )
+            e.probe_rows +=
+                static_cast<double>( config.probes.points.size() ) *
+                std::min( st.steps,
+                          1.0 + std::floor( stage.duration_s /
+                                            config.probes.interval_s ) );
         e.stages.push_back( st );
     }
 
@@ -132,6 +141,7 @@ RunEstimate estimateRun( const CaseConfig& config )
         snapshot_point_bytes_dry + ( water ? snapshot_point_bytes_water : 0.0 );
     e.output_bytes =
         e.snapshots * e.points * snapshot_bytes +
+        e.probe_rows * probe_row_bytes +
         ( s.checkpoint_interval_s > 0.0 ? e.points * point_bytes : 0.0 );
     return e;
 }
@@ -221,7 +231,7 @@ std::vector<std::string> runRefusals( const CaseConfig& config,
     over( e.output_bytes / 1.0e9, budget.max_output_gb, "estimated output (GB)",
           "--max-output-gb X",
           number( e.snapshots ) + " snapshots of " + number( e.points ) +
-              " points" );
+              " points, " + count( e.probe_rows ) + " rows of probes.csv" );
     return refusals;
 }
 

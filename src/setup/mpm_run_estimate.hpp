@@ -45,7 +45,9 @@ struct RunEstimate
     double steps = 0.0;
     double snapshots = 0.0;
     double memory_bytes = 0.0;
-    double output_bytes = 0.0; //!< particles.h5 (snapshots) and checkpoint
+    double probe_rows = 0.0; //!< rows of probes.csv: probes x samples
+    //! particles.h5 (snapshots), probes.csv and the checkpoint
+    double output_bytes = 0.0;
 };
 
 //---------------------------------------------------------------------------//
@@ -55,7 +57,9 @@ struct RunEstimate
   courant_number x cell_size x sqrt(inertia_scaling) / c of the fastest
   initial P-wave c over every stage's materials (points at rest; two-phase
   at saturation, the stiffest state), or solver.dt_s if set. Memory and
-  output use per-point and per-node sizes of the current data layout.
+  output use per-point and per-node sizes of the current data layout; the
+  output counts a probes.csv row per probe every probes.interval_s (at most
+  one a step) and at each stage start.
 */
 RunEstimate estimateRun( const CaseConfig& config );
 

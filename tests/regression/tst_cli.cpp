@@ -116,7 +116,7 @@ TEST( Cli, time_step_above_the_limit_is_refused_with_numbers )
     const fs::path dir = mpm_test::freshTempDir( "dt" );
     const fs::path file = writeCase( dir, blockCase( "dt_s = 0.01", "" ) );
     const auto result = runCommand( mpm_test::runArgs( file, dir / "out" ) );
-    mpm_test::expectExit( result, 1, "dt_s = 0.01 s exceeds the stable limit" );
+    mpm_test::expectExit( result, 2, "dt_s = 0.01 s exceeds the stable limit" );
     EXPECT_FALSE( fs::exists( dir / "out" ) );
 }
 

@@ -157,7 +157,8 @@ TEST( RestartDamaged, out_of_range_point_conditions_are_refused )
     expectDamageRefused(
         "load_group",
         []( mpm::Checkpoint& c ) { c.load_groups.push_back( { 3 } ); },
-        "load_groups[0]: expected load indices in 0..-1, found 3",
+        "conditions/load_group_members (group 0): expected load indices in "
+        "0..-1, found 3",
         two_phase_text );
     expectDamageRefused(
         "water_pressure",

@@ -7,6 +7,7 @@
 #include <io/mpm_json_output.hpp>
 #include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_snapshot_writer.hpp>
+#include <setup/mpm_state_bounds.hpp>
 #include <solver/drivers/mpm_checkpoint_state.hpp>
 #include <solver/drivers/mpm_run_stages.hpp>
 #include <solver/mpm_simulation.hpp>
@@ -52,16 +53,45 @@ enum class RunStatus
     Failed
 };
 
-//! A restart that cannot proceed (unreadable checkpoint, another case,
-//! missing earlier snapshots); nothing was written.
-class RestartError : public std::runtime_error
+//! Bad input found once the simulation is built, before its first step
+//! (a fixed time step above the stable limit); nothing was written.
+class RunRefused : public std::runtime_error
 {
   public:
-    explicit RestartError( const std::string& message )
+    explicit RunRefused( const std::string& message )
         : std::runtime_error( message )
     {
     }
 };
+
+//! A restart that cannot proceed (unreadable checkpoint, another case,
+//! missing earlier snapshots); nothing was written.
+class RestartError : public RunRefused
+{
+  public:
+    explicit RestartError( const std::string& message )
+        : RunRefused( message )
+    {
+    }
+};
+
+//! Why a run of `config` stops before its first step, or "": what runCase
+//! refuses once the simulation is built (Simulation::nextStep: a fixed
+//! solver.dt_s above the stable limit of the initial state).
+template <class ExecSpace>
+std::string firstStepRefusal( const CaseConfig& config )
+{
+    try
+    {
+        Simulation<ExecSpace> sim( config );
+        sim.nextStep();
+    }
+    catch ( const std::exception& error )
+    {
+        return error.what();
+    }
+    return "";
+}
 
 //---------------------------------------------------------------------------//
 /*!
@@ -88,7 +118,8 @@ Checkpoint readMatchingCheckpoint( const Simulation<ExecSpace>& sim,
         checkpoint, restart_file, checkpointIdentity( config, sim ) );
     if ( !mismatch.empty() )
         throw RestartError( mismatch );
-    const std::string range = checkpointRangeError( checkpoint, config );
+    const std::string range =
+        checkpointRangeError( checkpoint, config, stateBounds( config ) );
     if ( !range.empty() )
         throw RestartError( "checkpoint '" + restart_file +
                             "' is damaged: " + range );
@@ -148,6 +179,7 @@ Checkpoint resumeFromCheckpoint( Simulation<ExecSpace>& sim,
 template <class ExecSpace>
 RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
 {
+    installInterruptHandler();
     const auto wall_start = std::chrono::steady_clock::now();
     CaseConfig config = case_config;
     if ( options.checkpoint_interval_s >= 0.0 )
@@ -161,7 +193,21 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
         resumed =
             resumeFromCheckpoint( sim, config, options, earlier_snapshots );
     // Refuse a fixed time step above the stable limit before writing anything.
-    sim.nextStep();
+    try
+    {
+        sim.nextStep();
+    }
+    catch ( const SimulationError& error )
+    {
+        throw RunRefused( error.what() );
+    }
+    // Interrupted while it was set up: nothing written yet.
+    if ( interruptRequested() )
+    {
+        std::cerr << "rainslide: interrupted before the first step; nothing "
+                     "was written\n";
+        return RunStatus::Interrupted;
+    }
     // Accepted: an old metrics.json must not survive a run that then fails
     // to write one (a refused run leaves the folder as it was).
     std::filesystem::remove( options.out_dir + "/metrics.json" );
@@ -189,7 +235,6 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                              options.stop_after_steps );
     observer.probes = &probes;
     observer.case_file = config.file;
-    installInterruptHandler();
 
     nlohmann::json metrics = {
         { "case", config.name },

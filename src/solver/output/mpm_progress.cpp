@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include <signal.h>
+
 namespace mpm
 {
 namespace
@@ -18,9 +20,17 @@ extern "C" void onInterrupt( int ) { interrupt_flag.store( true ); }
 
 void installInterruptHandler()
 {
-    interrupt_flag.store( false );
-    std::signal( SIGINT, onInterrupt );
-    std::signal( SIGTERM, onInterrupt );
+    for ( const int signal : { SIGINT, SIGTERM } )
+    {
+        struct sigaction now = {};
+        if ( ::sigaction( signal, nullptr, &now ) != 0 ||
+             now.sa_handler == SIG_IGN || now.sa_handler == onInterrupt )
+            continue;
+        struct sigaction handler = {};
+        handler.sa_handler = onInterrupt;
+        sigemptyset( &handler.sa_mask );
+        ::sigaction( signal, &handler, nullptr );
+    }
 }
 
 bool interruptRequested() { return interrupt_flag.load(); }

@@ -59,8 +59,12 @@ void printResumeHint( const std::string& case_file,
                       const std::string& checkpoint_file, long checkpoint_step,
                       double checkpoint_time_s );
 
-//! SIGINT/SIGTERM set a flag (the run stops cleanly between steps, after
-//! writing a checkpoint).
+/*!
+  \brief From now on SIGINT/SIGTERM set a flag (the run stops cleanly
+  between steps, after writing a checkpoint; before the first step, nothing
+  is written). A signal the process inherited as ignored (a background job)
+  stays ignored; installing again keeps a flag already set.
+*/
 void installInterruptHandler();
 bool interruptRequested();
 
