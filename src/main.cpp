@@ -327,17 +327,22 @@ int main( int argc, char* argv[] )
     // A strength reduction needs a skeleton that can move and fail.
     if ( fos->parsed() &&
          ( config.solver.scheme == mpm::TwoPhaseScheme::Seepage ||
-           config.solver.scheme == mpm::TwoPhaseScheme::QuasiStatic ) )
+           config.solver.scheme == mpm::TwoPhaseScheme::QuasiStatic ||
+           config.solver.scheme == mpm::TwoPhaseScheme::Auto ) )
     {
-        const bool seepage =
-            config.solver.scheme == mpm::TwoPhaseScheme::Seepage;
+        const mpm::TwoPhaseScheme scheme = config.solver.scheme;
         std::cerr << config.file
                   << ": error: key 'solver.scheme': rainslide fos needs a "
                      "dynamic scheme (\"explicit\" or \"semi_implicit\"), "
                      "found "
-                  << ( seepage ? "\"seepage\", which holds the skeleton\n"
-                               : "\"quasi_static\", which stops when the "
-                                 "soil fails\n" );
+                  << ( scheme == mpm::TwoPhaseScheme::Seepage
+                           ? "\"seepage\", which holds the skeleton\n"
+                       : scheme == mpm::TwoPhaseScheme::QuasiStatic
+                           ? "\"quasi_static\", which stops when the soil "
+                             "fails\n"
+                           : "\"auto\", whose trials would not be dynamic "
+                             "throughout (--set solver.scheme=\"semi_implicit"
+                             "\" runs them as auto runs a failure)\n" );
         return exit_bad_input;
     }
     if ( fos->parsed() && options.out_dir.empty() )

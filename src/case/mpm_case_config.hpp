@@ -335,7 +335,8 @@ enum class TwoPhaseScheme
     Explicit,     //!< Eq. 8 at the points (docs/formulation.md §3)
     SemiImplicit, //!< a cell pressure solve (docs/formulation.md §9)
     Seepage,      //!< the skeleton held, the flow in real time (§10)
-    QuasiStatic   //!< the flow in real time, the skeleton relaxed (§11)
+    QuasiStatic,  //!< the flow in real time, the skeleton relaxed (§11)
+    Auto //!< quasi-static in equilibrium, semi-implicit in motion (§12)
 };
 
 struct SolverConfig
@@ -388,8 +389,8 @@ struct SolverConfig
     double inertia_scaling = 1.0;
     //! Simulated time between checkpoints (restart files); 0 = none.
     double checkpoint_interval_s = 0.0;
-    //! Two-phase: explicit Eq. 8, the semi-implicit pressure solve, or
-    //! seepage through the held skeleton.
+    //! Two-phase: explicit Eq. 8, the semi-implicit pressure solve,
+    //! seepage through the held skeleton, the quasi-static scheme, or auto.
     TwoPhaseScheme scheme = TwoPhaseScheme::Explicit;
     //! Seepage: the largest change of a point's saturation in one step
     //! that sets the next step.
@@ -403,6 +404,11 @@ struct SolverConfig
     double relaxation_max_steps = 20000;
     //! Quasi-static: the relaxation's least local damping coefficient.
     double relaxation_damping = 0.7;
+    //! Auto: the bodies are at rest again once the fastest point has
+    //! stayed slower than this, m/s ...
+    double auto_rest_speed_m_per_s = 1.0e-3;
+    //! ... for this long, s.
+    double auto_rest_window_s = 1.0;
     //! Semi-implicit: the pressure solve stops at |r| <= tolerance |b|.
     double pressure_tolerance = 1.0e-10;
     //! Semi-implicit: the most conjugate-gradient iterations of one solve.

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 namespace mpm
 {
@@ -74,6 +75,18 @@ class CaseParser
             // pressure.
             if ( _config.solver.scheme != TwoPhaseScheme::Explicit )
                 Impl::rejectIfDry( r, "scheme", _analysis );
+            // The auto scheme's two schemes choose steps of their own.
+            const toml::node* dt_node = r.find( "dt_s" );
+            if ( _config.solver.scheme == TwoPhaseScheme::Auto && dt_node &&
+                 _config.solver.dt_s > 0.0 )
+            {
+                std::ostringstream what;
+                what << "expected 0 (the automatic steps) with scheme = "
+                        "\"auto\", whose quasi-static and semi-implicit steps "
+                        "each choose their own, found "
+                     << _config.solver.dt_s << " s";
+                r.diag().keyError( *dt_node, r.keyPath( "dt_s" ), what.str() );
+            }
         }
         parseStages( root );
         if ( const auto* t = root.subTable( "probes", Need::Optional ) )

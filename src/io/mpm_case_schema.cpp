@@ -7,8 +7,8 @@ namespace Impl
 //---------------------------------------------------------------------------//
 const std::vector<std::string>& twoPhaseSchemeNames()
 {
-    static const std::vector<std::string> names = { "explicit", "semi_implicit",
-                                                    "seepage", "quasi_static" };
+    static const std::vector<std::string> names = {
+        "explicit", "semi_implicit", "seepage", "quasi_static", "auto" };
     return names;
 }
 
@@ -50,6 +50,10 @@ const std::vector<ConfigKey<SolverConfig>>& solverKeys()
                    Range::interval( 1.0, false, 1.0e6, false ), "" ),
         numberKey( "relaxation_damping", &S::relaxation_damping,
                    Range::interval( 0.0, false, 1.0, true ), "" ),
+        numberKey( "auto_rest_speed_m_per_s", &S::auto_rest_speed_m_per_s,
+                   Range::above( 0.0 ), "m/s" ),
+        numberKey( "auto_rest_window_s", &S::auto_rest_window_s,
+                   Range::atLeast( 0.0 ), "s" ),
         numberKey( "pressure_tolerance", &S::pressure_tolerance,
                    Range::interval( 0.0, true, 1.0, true ),
                    "(relative residual)" ),

@@ -98,10 +98,12 @@ RunEstimate estimateRun( const CaseConfig& config )
         consider( stage.materials );
 
     const SolverConfig& s = config.solver;
-    // The seepage step is set by the flow as it runs: its first step bounds
-    // the estimate (it grows from there while the flow allows).
+    // The seepage step is set by the flow as it runs (the quasi-static and
+    // auto schemes' too, while quasi-static): its first step bounds the
+    // estimate (it grows from there while the flow allows).
     const bool seepage = s.scheme == TwoPhaseScheme::Seepage ||
-                         s.scheme == TwoPhaseScheme::QuasiStatic;
+                         s.scheme == TwoPhaseScheme::QuasiStatic ||
+                         s.scheme == TwoPhaseScheme::Auto;
     const double dt = s.dt_s > 0.0 ? s.dt_s
                       : seepage    ? s.seepage_initial_dt_s
                                    : s.courant_number * h *
@@ -158,7 +160,8 @@ std::vector<std::string> runRefusals( const CaseConfig& config,
     const std::string dt_source =
         fixed ? "solver.dt_s = " + number( config.solver.dt_s ) + " s"
         : config.solver.scheme == TwoPhaseScheme::Seepage ||
-                config.solver.scheme == TwoPhaseScheme::QuasiStatic
+                config.solver.scheme == TwoPhaseScheme::QuasiStatic ||
+                config.solver.scheme == TwoPhaseScheme::Auto
             ? "solver.seepage_initial_dt_s = " +
                   number( config.solver.seepage_initial_dt_s ) +
                   " s, the flow's first step"

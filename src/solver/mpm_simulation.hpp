@@ -7,6 +7,7 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_step_scheme.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -17,7 +18,8 @@ namespace mpm
   \brief One simulation: its state (SimulationState: points, grid,
   materials, conditions) and the step scheme that advances it, chosen once
   from the case (makeStepScheme: the dry step, the explicit,
-  semi-implicit, seepage or quasi-static two-phase step; solver/steps).
+  semi-implicit, seepage, quasi-static or auto two-phase step;
+  solver/steps).
 */
 template <class ExecSpace>
 class Simulation : public SimulationState<ExecSpace>
@@ -38,7 +40,7 @@ class Simulation : public SimulationState<ExecSpace>
     }
 
     //! True if each of the scheme's steps ends at rest (seepage,
-    //! quasi-static).
+    //! quasi-static, auto while quasi-static).
     bool endsAtRest() const
     {
         return std::visit( []( const auto& s ) { return s.ends_at_rest; },
@@ -113,28 +115,51 @@ class Simulation : public SimulationState<ExecSpace>
         return limit;
     }
 
+    //! The auto scheme's switches and steps per scheme, or null.
+    const AutoStats* autoStats() const
+    {
+        const auto* automatic = std::get_if<AutoStep<ExecSpace>>( &_scheme );
+        return automatic ? &automatic->stats() : nullptr;
+    }
+
     /*!
-      \brief One step of the scheme, of size dt at stage time stage_time_s.
-      Throws SimulationError if a point leaves the grid (unless removal is
+      \brief One step of the scheme at stage time stage_time_s, of size dt
+      or, if the auto scheme hands off to dynamics, of the semi-implicit
+      scheme's step if shorter; returns the step taken. Throws
+      SimulationError if a point leaves the grid (unless removal is
       enabled).
     */
-    void advance( const double dt, const StepSettings& settings,
-                  const double stage_time_s = 0.0 )
+    double advance( double dt, const StepSettings& settings,
+                    const double stage_time_s = 0.0 )
     {
-        this->conditions.update( stage_time_s + dt );
-        const WaveSpeedLimit limit = waveSpeedLimit();
-        const PointUpdateReport report = std::visit(
-            [&]( auto& s ) { return s.advance( *this, dt, settings, limit ); },
-            _scheme );
+        PointUpdateReport report = stepOnce( dt, settings, stage_time_s );
+        const auto* automatic = std::get_if<AutoStep<ExecSpace>>( &_scheme );
+        if ( automatic && automatic->handedOff() )
+        {
+            dt = std::min( dt, nextStep() );
+            report = stepOnce( dt, settings, stage_time_s );
+        }
         this->stepTaken( dt, report );
         if ( report.first_outside >= 0 )
             throw SimulationError( this->describe(
                 report.first_outside,
                 "left the grid (set solver.remove_points_leaving_grid "
                 "= true to remove such points instead)" ) );
+        return dt;
     }
 
   private:
+    //! The scheme's step dt, the conditions at its end.
+    PointUpdateReport stepOnce( const double dt, const StepSettings& settings,
+                                const double stage_time_s )
+    {
+        this->conditions.update( stage_time_s + dt );
+        const WaveSpeedLimit limit = waveSpeedLimit();
+        return std::visit( [&]( auto& s )
+                           { return s.advance( *this, dt, settings, limit ); },
+                           _scheme );
+    }
+
     StepScheme<ExecSpace> _scheme;
 };
 

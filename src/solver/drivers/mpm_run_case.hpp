@@ -328,6 +328,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     if ( const RelaxationStats* relaxations = sim.relaxationStats() )
         metrics["relaxation"] =
             relaxationMetrics( config.solver, *relaxations );
+    if ( const AutoStats* automatic = sim.autoStats() )
+        metrics["auto"] = autoMetrics( config.solver, *automatic );
     metrics["stages"] = nlohmann::json::array();
     for ( const StageSummary& stage : summary.stages )
         metrics["stages"].push_back( stageMetrics( stage, sim.twoPhase() ) );

@@ -208,10 +208,12 @@ RunSummary runStages( Simulation<ExecSpace>& sim, const CaseConfig& config,
             const WaveSpeedLimit limit = sim.waveSpeedLimit();
             const double dt_stable = sim.nextStep();
             // Land exactly on the stage end and on snapshot times.
-            const double dt = std::min(
+            const double dt_asked = std::min(
                 dt_stable, std::min( stage.duration_s, state.next_snapshot_s ) -
                                progress.stage_time_s );
-            sim.advance( dt, settings, progress.stage_time_s );
+            // The auto scheme may take a shorter step (a hand-off).
+            const double dt =
+                sim.advance( dt_asked, settings, progress.stage_time_s );
             sim.checkStability( dt, limit );
             stage_summary.water.addStep( sim.stepWater() );
 

@@ -66,4 +66,32 @@ nlohmann::json relaxationMetrics( const SolverConfig& solver,
              { "steps_max", relaxations.max_steps } };
 }
 
+//---------------------------------------------------------------------------//
+nlohmann::json autoMetrics( const SolverConfig& solver, const AutoStats& stats )
+{
+    const auto steps = []( const SchemeSteps& taken, const char* limit )
+    {
+        return nlohmann::json{
+            { "steps", taken.steps },
+            { "wall_s", taken.wall_s },
+            { "min_step_s", taken.steps > 0 ? taken.min_step_s : 0.0 },
+            { "max_step_s", taken.max_step_s },
+            { "step_set_by", limit } };
+    };
+    nlohmann::json switches = nlohmann::json::array();
+    for ( const SchemeSwitch& change : stats.switches )
+        switches.push_back( { { "time_s", change.time_s },
+                              { "to", change.to },
+                              { "reason", change.reason } } );
+    return { { "rest_speed_m_per_s", solver.auto_rest_speed_m_per_s },
+             { "rest_window_s", solver.auto_rest_window_s },
+             { "switches", switches },
+             { "quasi_static", steps( stats.quasi_static,
+                                      "the flow's saturation change "
+                                      "(solver.seepage_saturation_change)" ) },
+             { "semi_implicit",
+               steps( stats.dynamic, "courant_number x the skeleton's CFL "
+                                     "limit" ) } };
+}
+
 } // namespace mpm

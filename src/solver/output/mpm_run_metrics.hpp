@@ -2,6 +2,7 @@
 #define MPM_RUN_METRICS_HPP
 
 #include <case/mpm_case_config.hpp>
+#include <solver/steps/mpm_auto_stats.hpp>
 #include <solver/steps/mpm_pressure_solve_stats.hpp>
 #include <solver/steps/mpm_skeleton_relaxation.hpp>
 
@@ -34,6 +35,11 @@ nlohmann::json pressureSolveMetrics( const SolverConfig& solver,
 //! settings and what its relaxations of the skeleton did.
 nlohmann::json relaxationMetrics( const SolverConfig& solver,
                                   const RelaxationStats& relaxations );
+
+//! metrics.json's `auto`: the auto scheme's settings, its switches (time,
+//! scheme, reason) and each scheme's steps, wall time and step range.
+nlohmann::json autoMetrics( const SolverConfig& solver,
+                            const AutoStats& stats );
 
 } // namespace mpm
 

@@ -43,6 +43,11 @@ class FlowStepRule
         return s.solver.dt_s > 0.0 ? s.solver.dt_s : _next_dt;
     }
 
+    //! Takes up the flow's steps again after other steps, the last of
+    //! `dt`: the next is twice that (the auto scheme's return to
+    //! quasi-static steps).
+    void resumeAfter( const double dt ) { _next_dt = 2.0 * dt; }
+
   protected:
     //! The next step after a step dt that changed a free point's saturation
     //! by `change` at most (the `scheme`'s step names it if it stops).

@@ -17,6 +17,14 @@
 
 namespace mpm
 {
+//! One quasi-static step tried (QuasiStaticStep::attempt).
+struct QuasiStaticAttempt
+{
+    PointUpdateReport report; //!< the step's (the relaxation's last loop)
+    RelaxationReport relaxed; //!< what the relaxation did
+    bool at_rest = false;     //!< the skeleton found its equilibrium
+};
+
 //---------------------------------------------------------------------------//
 /*!
   \brief The quasi-static coupled step (docs/formulation.md §11): real
@@ -63,10 +71,27 @@ class QuasiStaticStep : public FlowStepRule
     }
 
     //! One step (StepScheme): the flow, the relaxation, the water in
-    //! transit.
+    //! transit. Throws SimulationError if the skeleton finds no
+    //! equilibrium.
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& limit )
+    {
+        const QuasiStaticAttempt step = attempt( s, dt, settings, limit );
+        if ( !step.at_rest && step.report.first_outside < 0 )
+            throw SimulationError( noEquilibrium( s, step.relaxed ) );
+        return step.report;
+    }
+
+    /*!
+      \brief One step, as advance, that does not throw when the skeleton
+      finds no equilibrium: it then returns at_rest false with the state as
+      the relaxation left it (the auto scheme goes back to the step's start
+      and follows the failure dynamically).
+    */
+    QuasiStaticAttempt attempt( SimulationState<ExecSpace>& s, const double dt,
+                                const StepSettings& settings,
+                                const WaveSpeedLimit& limit )
     {
         const ExecSpace exec;
         // A. The flow over dt through the skeleton at rest, each point's
@@ -86,11 +111,13 @@ class QuasiStaticStep : public FlowStepRule
         // pressures, each held.
         pointWaterVolumes( exec, s.particles, s.water_particles, s.water,
                            _stored_p );
-        const RelaxationReport relaxed =
-            _relaxation.relax( exec, s, _flow.phases(), settings );
-        _relaxations.add( relaxed );
-        if ( !relaxed.at_rest && relaxed.last.first_outside < 0 )
-            throw SimulationError( noEquilibrium( s, relaxed ) );
+        QuasiStaticAttempt step;
+        step.relaxed = _relaxation.relax( exec, s, _flow.phases(), settings );
+        _relaxations.add( step.relaxed );
+        step.at_rest = step.relaxed.at_rest;
+        step.report = step.relaxed.last;
+        if ( !step.at_rest || step.report.first_outside >= 0 )
+            return step;
         // C. The water in transit: what the flow gave the skeleton less
         // what its pore volume took up (a prescribed p_w's condition gave
         // what its point took up).
@@ -100,11 +127,10 @@ class QuasiStaticStep : public FlowStepRule
         _transit = left.in_transit;
         // D. The next step from the flow's saturation change.
         chooseNextStep( s.solver, dt, flow.saturation_change, scheme );
-        PointUpdateReport report = relaxed.last;
-        report.water = flow.report.water;
-        report.water.prescribed += left.prescribed;
-        report.num_removed += flow.report.num_removed;
-        return report;
+        step.report.water = flow.report.water;
+        step.report.water.prescribed += left.prescribed;
+        step.report.num_removed += flow.report.num_removed;
+        return step;
     }
 
     //! The pressure solves so far.

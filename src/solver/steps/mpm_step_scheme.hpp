@@ -3,6 +3,7 @@
 
 #include <case/mpm_case_config.hpp>
 #include <solver/mpm_simulation_state.hpp>
+#include <solver/steps/mpm_auto_step.hpp>
 #include <solver/steps/mpm_dry_step.hpp>
 #include <solver/steps/mpm_explicit_two_phase_step.hpp>
 #include <solver/steps/mpm_quasi_static_step.hpp>
@@ -30,7 +31,8 @@ namespace mpm
   - `waterInTransit()`: the water it has taken in and not yet given to the
     points, m^3 per metre (QuasiStaticStep);
   - `ends_at_rest`: true if each step ends at rest (a quasi-static stage
-    then has nothing to settle and runs its duration);
+    then has nothing to settle and runs its duration; AutoStep's changes
+    with the scheme it runs);
   - `scheme`, `automatic_step`, `fixed_step` and `limiting_wave`: its name
     as the case file writes it, how it chooses its step (without and with
     solver.dt_s) and the wave that limits its step.
@@ -39,11 +41,11 @@ template <class ExecSpace>
 using StepScheme =
     std::variant<DryStep<ExecSpace>, ExplicitTwoPhaseStep<ExecSpace>,
                  SemiImplicitStep<ExecSpace>, SeepageStep<ExecSpace>,
-                 QuasiStaticStep<ExecSpace>>;
+                 QuasiStaticStep<ExecSpace>, AutoStep<ExecSpace>>;
 
 //! The scheme of `state`'s scene and [solver] scheme: the dry step for a
-//! dry scene, else the explicit, semi-implicit, seepage or quasi-static
-//! two-phase step.
+//! dry scene, else the explicit, semi-implicit, seepage, quasi-static or
+//! auto two-phase step.
 template <class ExecSpace>
 StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
 {
@@ -59,6 +61,9 @@ StepScheme<ExecSpace> makeStepScheme( const SimulationState<ExecSpace>& state )
     if ( state.solver.scheme == TwoPhaseScheme::QuasiStatic )
         return StepScheme<ExecSpace>(
             std::in_place_type<QuasiStaticStep<ExecSpace>>, state );
+    if ( state.solver.scheme == TwoPhaseScheme::Auto )
+        return StepScheme<ExecSpace>( std::in_place_type<AutoStep<ExecSpace>>,
+                                      state );
     return StepScheme<ExecSpace>(
         std::in_place_type<ExplicitTwoPhaseStep<ExecSpace>>, state );
 }
