@@ -1,6 +1,7 @@
 #ifndef MPM_SKELETON_RELAXATION_HPP
 #define MPM_SKELETON_RELAXATION_HPP
 
+#include <mpm_device_type.hpp>
 #include <mpm_pore_pressure_increments.hpp>
 #include <mpm_timestep.hpp>
 #include <solver/mpm_simulation_state.hpp>
@@ -47,7 +48,10 @@ struct RelaxationStats
   the Courant number times the skeleton's CFL limit, from rest, until the
   fastest point moves slower than solver.relaxation_speed_m_per_s, at
   most solver.relaxation_max_steps. The steps are pseudo-time: the
-  simulated time and the step count stay. The points are left at rest.
+  simulated time and the step count stay. The water is held to the solid
+  (WaterOnGrid::held_to_solid: the flow is the step's own) and afterwards
+  given back the seepage velocities the flow left, the next flow's start.
+  The points are left at rest.
 */
 template <class ExecSpace>
 class SkeletonRelaxation
@@ -66,6 +70,9 @@ class SkeletonRelaxation
             std::max( settings.damping, s.solver.relaxation_damping );
         const double rest_speed = s.solver.relaxation_speed_m_per_s;
         Kokkos::deep_copy( exec, s.particles.v_p, 0.0 );
+        keepSeepageVelocities( exec, s );
+        const auto held =
+            TwoPhaseStepPhases<ExecSpace>::WaterOnGrid::held_to_solid;
         RelaxationReport report;
         int removed = 0;
         while ( report.steps < s.solver.relaxation_max_steps )
@@ -76,9 +83,9 @@ class SkeletonRelaxation
             // 1. P2G at the held p_w; 2. both phases' nodal velocities,
             // damped.
             phases.scatter( exec, s, damped );
-            phases.updateGrid( exec, s, dt, damped );
+            phases.updateGrid( exec, s, dt, damped, held );
             // 3. G2P; 4. the remap.
-            phases.gatherAndRemap( exec, s, dt, s.solver.flip_fraction );
+            phases.gatherAndRemap( exec, s, dt, s.solver.flip_fraction, held );
             // 5. With B-bar: the cell averages of the velocity gradients.
             if ( s.solver.bbar )
                 _bbar( exec, s );
@@ -99,8 +106,11 @@ class SkeletonRelaxation
         }
         report.at_rest = report.max_speed < rest_speed;
         report.last.num_removed = removed;
-        // The step ends at rest, its CFL limit the skeleton's.
+        // The step ends at rest, its CFL limit the skeleton's; the water
+        // seeps on as the flow left it.
         Kokkos::deep_copy( exec, s.particles.v_p, 0.0 );
+        if ( s.water_particles.allocated() )
+            Kokkos::deep_copy( exec, s.water_particles.v_w_p, _v_w_p );
         const WaveSpeedLimit after = criticalTimeStep(
             exec, s.particles, s.materials, s.grid.geometry.h );
         StepDiagnostics& diagnostics = report.last.diagnostics;
@@ -112,7 +122,20 @@ class SkeletonRelaxation
     }
 
   private:
+    //! Keeps the points' water velocities (the flow's, the solid at rest).
+    void keepSeepageVelocities( const ExecSpace& exec,
+                                const SimulationState<ExecSpace>& s )
+    {
+        if ( !s.water_particles.allocated() )
+            return;
+        if ( _v_w_p.extent( 0 ) != s.water_particles.v_w_p.extent( 0 ) )
+            _v_w_p = Kokkos::View<double* [2], DeviceType<ExecSpace>>(
+                "relaxation_v_w_p", s.water_particles.v_w_p.extent( 0 ) );
+        Kokkos::deep_copy( exec, _v_w_p, s.water_particles.v_w_p );
+    }
+
     BbarCellAverages<ExecSpace> _bbar;
+    Kokkos::View<double* [2], DeviceType<ExecSpace>> _v_w_p;
 };
 
 } // namespace mpm

@@ -56,29 +56,44 @@ class TwoPhaseStepPhases
                         settings.gravity_y, s.water.density );
     }
 
+    //! How the water moves on the grid: with Darcy's drag and the edge
+    //! inflows' ties (every step), or held to the solid (the quasi-static
+    //! relaxation: the drag held_water_drag times Darcy's and no inflow,
+    //! the flow being the step's own).
+    enum class WaterOnGrid
+    {
+        darcy,
+        held_to_solid
+    };
+    static constexpr double held_water_drag = 1.0e8;
+
     //! 2. Nodal velocities of both phases, the drag implicit (Eqs. 9-10,
     //! gridUpdateTwoPhase).
     void updateGrid( const ExecSpace& exec, SimulationState<ExecSpace>& s,
-                     const double dt, const StepSettings& settings )
+                     const double dt, const StepSettings& settings,
+                     const WaterOnGrid water = WaterOnGrid::darcy )
     {
-        gridUpdateTwoPhase( exec, s.grid, s.water_grid, _node_sums, dt,
-                            settings.damping, s.water.density,
-                            s.water.viscosity, s.solver.inertia_scaling,
-                            baseAccess( s ), s.conditions.inflow_flux_i );
+        const double drag_factor =
+            water == WaterOnGrid::darcy ? 1.0 : held_water_drag;
+        gridUpdateTwoPhase(
+            exec, s.grid, s.water_grid, _node_sums, dt, settings.damping,
+            s.water.density, s.water.viscosity * drag_factor,
+            s.solver.inertia_scaling, baseAccess( s ), inflowFlux( s, water ) );
     }
 
     //! 3. G2P: point velocities of both phases (FLIP/PIC share
     //! `flip_fraction`) and displacement increments; 4. the MUSL remap of
     //! both phases; 4b. the base cells' water (baseCellRates).
     void gatherAndRemap( const ExecSpace& exec, SimulationState<ExecSpace>& s,
-                         const double dt, const double flip_fraction )
+                         const double dt, const double flip_fraction,
+                         const WaterOnGrid water = WaterOnGrid::darcy )
     {
         g2pVelocityRemapTwoPhase(
             exec, s.particles, s.water_particles, s.grid, s.water_grid, dt,
             flip_fraction, s.solver.water_relative_flip, s.materials, s.water,
             s.solver.inertia_scaling, _momentum_sums );
         remapVelocityTwoPhase( exec, s.grid, s.water_grid, _momentum_sums,
-                               s.conditions.inflow_flux_i, s.water.density );
+                               inflowFlux( s, water ), s.water.density );
         baseCellRates( exec, s.base_cells, s.grid, s.water_grid );
     }
 
@@ -141,6 +156,21 @@ class TwoPhaseStepPhases
     }
 
   private:
+    //! The edge inflows' nodal fluxes, or none for water held to the solid.
+    Kokkos::View<double***, DeviceType<ExecSpace>>
+    inflowFlux( const SimulationState<ExecSpace>& s, const WaterOnGrid water )
+    {
+        const auto& flux = s.conditions.inflow_flux_i;
+        if ( water == WaterOnGrid::darcy )
+            return flux;
+        if ( _no_inflow.extent( 0 ) != flux.extent( 0 ) ||
+             _no_inflow.extent( 1 ) != flux.extent( 1 ) )
+            _no_inflow = Kokkos::View<double***, DeviceType<ExecSpace>>(
+                "no_inflow_flux_i", flux.extent( 0 ), flux.extent( 1 ),
+                flux.extent( 2 ) );
+        return _no_inflow;
+    }
+
     static BaseCellAccess<ExecSpace>
     baseAccess( const SimulationState<ExecSpace>& s )
     {
@@ -149,6 +179,7 @@ class TwoPhaseStepPhases
 
     TwoPhaseNodeSums<ExecSpace> _node_sums;
     TwoPhaseMomentumSums<ExecSpace> _momentum_sums;
+    Kokkos::View<double***, DeviceType<ExecSpace>> _no_inflow;
     CellPointLists<ExecSpace> _cell_lists;
 };
 
