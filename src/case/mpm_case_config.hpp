@@ -395,8 +395,8 @@ struct SolverConfig
     //! Seepage: the largest change of a point's saturation in one step
     //! that sets the next step.
     double seepage_saturation_change = 0.01;
-    //! Seepage: the first step, s.
-    double seepage_initial_dt_s = 1.0;
+    //! Seepage and quasi-static: the first step of every stage, s.
+    double seepage_initial_dt_s = 0.01;
     //! Quasi-static: the skeleton is at rest once its fastest point moves
     //! slower than this, m/s.
     double relaxation_speed_m_per_s = 1.0e-6;

@@ -122,10 +122,28 @@ class Simulation : public SimulationState<ExecSpace>
         return automatic ? &automatic->stats() : nullptr;
     }
 
+    //! Applies `stage`'s conditions (SimulationState::applyStage) and
+    //! starts the scheme's steps of the stage (a flow's from
+    //! solver.seepage_initial_dt_s).
+    void startStage( const StageConfig& stage )
+    {
+        this->applyStage( stage );
+        std::visit( [this]( auto& s ) { s.startStage( this->solver ); },
+                    _scheme );
+    }
+
+    //! The steps the scheme gave back and took again, shorter, so far.
+    long stepsRetaken() const
+    {
+        return std::visit( []( const auto& s ) { return s.stepsRetaken(); },
+                           _scheme );
+    }
+
     /*!
       \brief One step of the scheme at stage time stage_time_s, of size dt
-      or, if the auto scheme hands off to dynamics, of the semi-implicit
-      scheme's step if shorter; returns the step taken. Throws
+      or, if the scheme gives the step back (the auto scheme hands off to
+      dynamics, or a flow changed a saturation too much), of the scheme's
+      next step if shorter; returns the step taken. Throws
       SimulationError if a point leaves the grid (unless removal is
       enabled).
     */
@@ -133,8 +151,7 @@ class Simulation : public SimulationState<ExecSpace>
                     const double stage_time_s = 0.0 )
     {
         PointUpdateReport report = stepOnce( dt, settings, stage_time_s );
-        const auto* automatic = std::get_if<AutoStep<ExecSpace>>( &_scheme );
-        if ( automatic && automatic->handedOff() )
+        while ( stepGivenBack() )
         {
             dt = std::min( dt, nextStep() );
             report = stepOnce( dt, settings, stage_time_s );
@@ -149,6 +166,13 @@ class Simulation : public SimulationState<ExecSpace>
     }
 
   private:
+    //! True if the scheme's last advance took no step.
+    bool stepGivenBack() const
+    {
+        return std::visit( []( const auto& s ) { return s.stepGivenBack(); },
+                           _scheme );
+    }
+
     //! The scheme's step dt, the conditions at its end.
     PointUpdateReport stepOnce( const double dt, const StepSettings& settings,
                                 const double stage_time_s )

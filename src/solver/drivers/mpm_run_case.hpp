@@ -320,8 +320,9 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     // Which limit set the step.
     const WaveSpeedLimit limit = sim.waveSpeedLimit();
     metrics["time_step"] = timeStepMetrics(
-        config.solver, { sim.schemeName(), sim.stepRule(), sim.limitingWave(),
-                         limit.dt_limit, limit.max_wave_speed } );
+        config.solver,
+        { sim.schemeName(), sim.stepRule(), sim.limitingWave(), limit.dt_limit,
+          limit.max_wave_speed, sim.stepsRetaken() } );
     if ( const PressureSolveStats* solves = sim.pressureSolveStats() )
         metrics["pressure_solve"] =
             pressureSolveMetrics( config.solver, *solves );

@@ -6,14 +6,15 @@ namespace mpm
 nlohmann::json timeStepMetrics( const SolverConfig& solver,
                                 const TimeStepRecord& record )
 {
-    return { { "rule", record.rule },
-             { "scheme", record.scheme },
-             { "limiting_wave", record.limiting_wave },
-             { "courant_number", solver.courant_number },
-             { "inertia_scaling", solver.inertia_scaling },
-             { "final_cfl_limit_s", record.final_cfl_limit_s },
-             { "final_max_wave_speed_m_per_s",
-               record.final_max_wave_speed_m_per_s } };
+    return {
+        { "rule", record.rule },
+        { "scheme", record.scheme },
+        { "limiting_wave", record.limiting_wave },
+        { "courant_number", solver.courant_number },
+        { "inertia_scaling", solver.inertia_scaling },
+        { "final_cfl_limit_s", record.final_cfl_limit_s },
+        { "final_max_wave_speed_m_per_s", record.final_max_wave_speed_m_per_s },
+        { "steps_retaken", record.steps_retaken } };
 }
 
 //---------------------------------------------------------------------------//

@@ -18,10 +18,11 @@ struct TimeStepRecord
     const char* limiting_wave; //!< the wave whose speed limits the step
     double final_cfl_limit_s;  //!< the CFL limit at the end of the run
     double final_max_wave_speed_m_per_s;
+    long steps_retaken; //!< steps given back and taken again, shorter
 };
 
 //! metrics.json's `time_step`: the rule, the scheme and its limiting wave,
-//! the final CFL limit.
+//! the final CFL limit, the steps taken again.
 nlohmann::json timeStepMetrics( const SolverConfig& solver,
                                 const TimeStepRecord& record );
 

@@ -4,7 +4,6 @@
 #include <mpm_timestep.hpp>
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_auto_stats.hpp>
-#include <solver/steps/mpm_point_state_copy.hpp>
 #include <solver/steps/mpm_pressure_solve_stats.hpp>
 #include <solver/steps/mpm_quasi_static_step.hpp>
 #include <solver/steps/mpm_semi_implicit_step.hpp>
@@ -53,8 +52,14 @@ class AutoStep
     explicit AutoStep( const SimulationState<ExecSpace>& state )
         : _quasi_static( state )
         , _dynamic( state )
-        , _step_start( state )
     {
+    }
+
+    //! A stage starts: the quasi-static steps start again from
+    //! solver.seepage_initial_dt_s.
+    void startStage( const SolverConfig& solver )
+    {
+        _quasi_static.startStage( solver );
     }
 
     //! The CFL limit of the skeleton's P wave (both schemes').
@@ -74,14 +79,16 @@ class AutoStep
     /*!
       \brief One step of the scheme that runs. A quasi-static step whose
       skeleton finds no equilibrium leaves the state as it was, hands off to
-      the semi-implicit scheme and returns with handedOff() true: the
+      the semi-implicit scheme and returns with stepGivenBack() true: the
       caller takes the step again, at the semi-implicit scheme's nextStep.
+      So does a quasi-static step whose flow changed a saturation too much,
+      to be taken again at the quasi-static scheme's shorter nextStep.
     */
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& limit )
     {
-        _handed_off = false;
+        _given_back = false;
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&start]()
         {
@@ -92,16 +99,18 @@ class AutoStep
         if ( ends_at_rest )
         {
             const double chosen = _quasi_static.nextStep( s, limit );
-            _step_start.save( s );
             const QuasiStaticAttempt step =
                 _quasi_static.attempt( s, dt, settings, limit );
             _stats.quasi_static.wall_s += elapsed();
+            _given_back = step.given_back;
+            if ( step.given_back )
+                return PointUpdateReport();
             if ( step.at_rest && step.report.first_outside < 0 )
             {
                 _stats.quasi_static.add( chosen );
                 return step.report;
             }
-            _step_start.restore( s );
+            _quasi_static.restoreStepStart( s );
             handOff( s, dt, step.relaxed );
             return PointUpdateReport();
         }
@@ -114,9 +123,13 @@ class AutoStep
         return report;
     }
 
-    //! True if the last advance handed off to the semi-implicit scheme
-    //! without taking a step.
-    bool handedOff() const { return _handed_off; }
+    //! True if the last advance took no step (a hand-off to the
+    //! semi-implicit scheme, or a quasi-static step given back): the caller
+    //! takes it again at nextStep.
+    bool stepGivenBack() const { return _given_back; }
+
+    //! The quasi-static steps given back so far.
+    long stepsRetaken() const { return _quasi_static.stepsRetaken(); }
 
     //! The pressure solves of both schemes so far.
     const PressureSolveStats* pressureSolveStats() const
@@ -154,7 +167,7 @@ class AutoStep
             reason << " and a point left the grid";
         _stats.switches.push_back( { s.time, _dynamic.scheme, reason.str() } );
         ends_at_rest = false;
-        _handed_off = true;
+        _given_back = true;
         _rest_since_s = -1.0;
         _dynamic_until_s = s.time + dt;
     }
@@ -188,10 +201,9 @@ class AutoStep
 
     QuasiStaticStep<ExecSpace> _quasi_static;
     SemiImplicitStep<ExecSpace> _dynamic;
-    PointStateCopy<ExecSpace> _step_start;
     AutoStats _stats;
     mutable PressureSolveStats _solves;
-    bool _handed_off = false;
+    bool _given_back = false;
     double _rest_since_s = -1.0; //!< since when the points are at rest
     //! The end of the quasi-static step given up: the dynamic steps run at
     //! least to it (its pore pressures found no equilibrium).

@@ -55,6 +55,11 @@ struct CflStepRule
         return chooseTimeStep( s.solver, limit );
     }
 
+    //! A stage's start changes nothing; no step is ever given back.
+    void startStage( const SolverConfig& ) {}
+    bool stepGivenBack() const { return false; }
+    long stepsRetaken() const { return 0; }
+
     //! No water in transit, no relaxation.
     double waterInTransit() const { return 0.0; }
     const RelaxationStats* relaxationStats() const { return nullptr; }

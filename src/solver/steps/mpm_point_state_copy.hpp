@@ -12,9 +12,10 @@ namespace mpm
 /*!
   \brief A copy of every point field of a simulation (the solid's and, in a
   two-phase scene, the water's and the cells' last pressure increments, the
-  next pressure solve's start), on the device: the auto scheme keeps the
-  state at a quasi-static step's start to go back to it when the skeleton
-  finds no equilibrium over the step (AutoStep).
+  next pressure solve's start), on the device: the seepage and quasi-static
+  schemes keep the state at a step's start to go back to it when the step
+  is given back (its flow changed a saturation too much, or, in the auto
+  scheme, its skeleton found no equilibrium).
 */
 template <class ExecSpace>
 class PointStateCopy

@@ -8,6 +8,7 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_flow_step_rule.hpp>
 #include <solver/steps/mpm_held_skeleton_flow.hpp>
+#include <solver/steps/mpm_point_state_copy.hpp>
 #include <solver/steps/mpm_skeleton_relaxation.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -23,6 +24,9 @@ struct QuasiStaticAttempt
     PointUpdateReport report; //!< the step's (the relaxation's last loop)
     RelaxationReport relaxed; //!< what the relaxation did
     bool at_rest = false;     //!< the skeleton found its equilibrium
+    //! The flow changed a saturation too much: the state is the step's
+    //! start again, nothing relaxed (FlowStepRule::stepGivenBack).
+    bool given_back = false;
 };
 
 //---------------------------------------------------------------------------//
@@ -39,7 +43,9 @@ struct QuasiStaticAttempt
   what its pore volume took up is the water in transit, stored by the next
   step's flow: no water is lost, and the stored water plus the water in
   transit balance the seepage, rain and runoff. The step is set by the flow
-  (FlowStepRule); no wave limits it.
+  (FlowStepRule); no wave limits it. A flow that changed a saturation by
+  more than twice the target gives the step back before B: the state is
+  restored and the step taken again, shorter.
 */
 template <class ExecSpace>
 class QuasiStaticStep : public FlowStepRule
@@ -58,6 +64,7 @@ class QuasiStaticStep : public FlowStepRule
         , _anticipated_p( "anticipated_water_p", state.particles.size() )
         , _stored_p( "stored_water_p", state.particles.size() )
         , _transit_p( "water_in_transit_p", state.particles.size() )
+        , _step_start( state )
     {
         _flow.projection().setSkeletonStorage( _skeleton_storage_p );
     }
@@ -78,7 +85,8 @@ class QuasiStaticStep : public FlowStepRule
                                const WaveSpeedLimit& limit )
     {
         const QuasiStaticAttempt step = attempt( s, dt, settings, limit );
-        if ( !step.at_rest && step.report.first_outside < 0 )
+        if ( !step.given_back && !step.at_rest &&
+             step.report.first_outside < 0 )
             throw SimulationError( noEquilibrium( s, step.relaxed ) );
         return step.report;
     }
@@ -86,8 +94,8 @@ class QuasiStaticStep : public FlowStepRule
     /*!
       \brief One step, as advance, that does not throw when the skeleton
       finds no equilibrium: it then returns at_rest false with the state as
-      the relaxation left it (the auto scheme goes back to the step's start
-      and follows the failure dynamically).
+      the relaxation left it (the auto scheme goes back to the step's start,
+      restoreStepStart, and follows the failure dynamically).
     */
     QuasiStaticAttempt attempt( SimulationState<ExecSpace>& s, const double dt,
                                 const StepSettings& settings,
@@ -95,7 +103,9 @@ class QuasiStaticStep : public FlowStepRule
     {
         const ExecSpace exec;
         // A. The flow over dt through the skeleton at rest, each point's
-        // storage with the skeleton's, the water in transit a source.
+        // storage with the skeleton's, the water in transit a source; a
+        // flow that changed a saturation too much is given back.
+        _step_start.save( s );
         skeletonStorages( exec, s.particles, s.water_particles, s.materials,
                           _skeleton_storage_p );
         Kokkos::deep_copy( exec, _anticipated_p, 0.0 );
@@ -107,11 +117,17 @@ class QuasiStaticStep : public FlowStepRule
                 _transit_p,
                 _anticipated_p,
                 s.particles.vol_p } );
+        QuasiStaticAttempt step;
+        if ( givesBack( s.solver, dt, flow.saturation_change, scheme ) )
+        {
+            _step_start.restore( s );
+            step.given_back = true;
+            return step;
+        }
         // B. The skeleton relaxed to equilibrium under the new pore
         // pressures, each held.
         pointWaterVolumes( exec, s.particles, s.water_particles, s.water,
                            _stored_p );
-        QuasiStaticAttempt step;
         step.relaxed = _relaxation.relax( exec, s, _flow.phases(), settings );
         _relaxations.add( step.relaxed );
         step.at_rest = step.relaxed.at_rest;
@@ -131,6 +147,12 @@ class QuasiStaticStep : public FlowStepRule
         step.report.water.prescribed += left.prescribed;
         step.report.num_removed += flow.report.num_removed;
         return step;
+    }
+
+    //! Gives `s` back the state at the start of the last attempt.
+    void restoreStepStart( SimulationState<ExecSpace>& s ) const
+    {
+        _step_start.restore( s );
     }
 
     //! The pressure solves so far.
@@ -166,6 +188,7 @@ class QuasiStaticStep : public FlowStepRule
     SkeletonRelaxation<ExecSpace> _relaxation;
     Kokkos::View<double*, DeviceType<ExecSpace>> _skeleton_storage_p,
         _anticipated_p, _stored_p, _transit_p;
+    PointStateCopy<ExecSpace> _step_start;
     double _transit = 0.0; //!< m^3 per metre
     RelaxationStats _relaxations;
 };

@@ -6,6 +6,7 @@
 #include <solver/mpm_simulation_state.hpp>
 #include <solver/steps/mpm_flow_step_rule.hpp>
 #include <solver/steps/mpm_held_skeleton_flow.hpp>
+#include <solver/steps/mpm_point_state_copy.hpp>
 #include <solver/steps/mpm_skeleton_relaxation.hpp>
 
 namespace mpm
@@ -17,8 +18,9 @@ namespace mpm
   rigid soil (HeldSkeletonFlow, each point taking its cell's increment);
   nothing moves, so no wave limits the step. The step is set by the flow
   (FlowStepRule): its largest change of a free point's saturation, taken
-  before the cell equilibrium. Backward Euler's error in time scales with
-  it.
+  before the cell equilibrium; a step that changed it by more than twice
+  the target is given back and taken again, shorter. Backward Euler's
+  error in time scales with it.
 */
 template <class ExecSpace>
 class SeepageStep : public FlowStepRule
@@ -32,6 +34,7 @@ class SeepageStep : public FlowStepRule
     explicit SeepageStep( const SimulationState<ExecSpace>& state )
         : FlowStepRule( state.solver )
         , _flow( state )
+        , _step_start( state )
     {
     }
 
@@ -43,17 +46,25 @@ class SeepageStep : public FlowStepRule
                                  s.grid.geometry.h );
     }
 
-    //! One step (StepScheme) of the flow through the held skeleton.
+    //! One step (StepScheme) of the flow through the held skeleton, or
+    //! none if the step is given back (stepGivenBack).
     PointUpdateReport advance( SimulationState<ExecSpace>& s, const double dt,
                                const StepSettings& settings,
                                const WaveSpeedLimit& limit )
     {
         // 1-9. The flow over dt, each point taking its cell's increment.
+        _step_start.save( s );
         const FlowReport flow = _flow.advance(
             s, dt, settings, limit,
             CellPressureIncrement<ExecSpace>{
                 s.water_grid.dp_w_c, s.particles.x_p, s.grid.geometry } );
-        // 10. The next step from its saturation change.
+        // 10. A step that changed a saturation too much is taken again,
+        // shorter; else the next step from its saturation change.
+        if ( givesBack( s.solver, dt, flow.saturation_change, scheme ) )
+        {
+            _step_start.restore( s );
+            return PointUpdateReport();
+        }
         chooseNextStep( s.solver, dt, flow.saturation_change, scheme );
         return flow.report;
     }
@@ -70,6 +81,7 @@ class SeepageStep : public FlowStepRule
 
   private:
     HeldSkeletonFlow<ExecSpace> _flow;
+    PointStateCopy<ExecSpace> _step_start;
 };
 
 } // namespace mpm

@@ -23,6 +23,12 @@ namespace mpm
     reference (physics::stepFlipFraction); returns the point loop's report;
   - `nextStep(state, limit)`: the step it takes next, given the CFL limit
     `limit` of the state now;
+  - `stepGivenBack()`: true if the last advance took no step, the state
+    as before it: the caller takes the step again at nextStep (the flow
+    changed a saturation too much, or the auto scheme handed off);
+    `stepsRetaken()` counts them;
+  - `startStage(solver)`: a stage starts (the flow's steps start again
+    from solver.seepage_initial_dt_s);
   - `cflLimit(state)`: the CFL limit (Courant number 1) and largest wave
     speed of its fastest wave on the points now, of the real (not
     inertia-scaled) system;
