@@ -1,9 +1,11 @@
-// The hydraulic keys of issue 12 in a case file: a tabulated initial
-// pore-pressure profile, a held pore pressure on every point, rain on a
-// polyline (its length derived), and the warnings of the reader and of the
+// The hydraulic keys in a case file: a tabulated initial pore-pressure
+// profile, a held pore pressure on every point, rain on a polyline (its
+// length derived), a hyetograph, and the warnings of the reader and of the
 // point check.
 #include <io/mpm_case_reader.hpp>
+#include <mpm_test_case_reader.hpp>
 #include <mpm_test_toml.hpp>
+#include <setup/mpm_conditions.hpp>
 #include <setup/mpm_point_check.hpp>
 
 #include <gtest/gtest.h>
@@ -64,6 +66,63 @@ TEST( HydraulicKeys, profile_hold_and_polyline_inflow_are_read )
     EXPECT_EQ( level.points.polyline_measure, mpm::LineMeasure::Horizontal );
     EXPECT_DOUBLE_EQ( level.length_m, 12.0 );
     EXPECT_FALSE( level.ponding );
+}
+
+// A hyetograph: blocks of rain in mm/h, zero before the first block, the
+// last to the stage's end; the mean over any span is the blocks' depth over
+// it. Exclusive with flux_m_per_s and time_function; no negative rain.
+TEST( HydraulicKeys, a_hyetograph_is_rain_in_blocks_of_time )
+{
+    const std::string rain =
+        "\n[[stages.inflows]]\nwhere = \"surface_cells\"\nlength_m = 10.0\n"
+        "hyetograph_mm_per_h = [[600.0, 10.0], [3600.0, 30.0], [7200.0, "
+        "0.0]]\n";
+    const mpm::CaseConfig c =
+        mpm::parseCase( hydraulicCase( "", rain ), "h.toml" );
+    ASSERT_EQ( c.stages[0].inflows.size(), 1u );
+    const mpm::WaterInflow& inflow = c.stages[0].inflows[0];
+    EXPECT_DOUBLE_EQ( inflow.flux_m_per_s, 1.0e-3 / 3600.0 );
+    const mpm::TimeFunction& f = inflow.time_function;
+    EXPECT_DOUBLE_EQ( mpm::evaluateTimeFunction( f, 300.0 ), 0.0 );
+    EXPECT_DOUBLE_EQ( mpm::evaluateTimeFunction( f, 601.0 ), 10.0 );
+    EXPECT_DOUBLE_EQ( mpm::evaluateTimeFunction( f, 3599.0 ), 10.0 );
+    EXPECT_DOUBLE_EQ( mpm::evaluateTimeFunction( f, 3601.0 ), 30.0 );
+    EXPECT_DOUBLE_EQ( mpm::evaluateTimeFunction( f, 1.0e5 ), 0.0 );
+    // 3000 s at 10 mm/h in the first hour; 600 s at 10, 400 s at 30.
+    EXPECT_NEAR( mpm::meanOfTimeFunction( f, 0.0, 3600.0 ),
+                 10.0 * 3000.0 / 3600.0, 1.0e-12 );
+    EXPECT_NEAR( mpm::meanOfTimeFunction( f, 3000.0, 4000.0 ), 18.0, 1.0e-12 );
+    EXPECT_NEAR( mpm::meanOfTimeFunction( f, 0.0, 1.0e4 ),
+                 ( 10.0 * 3000.0 + 30.0 * 3600.0 ) / 1.0e4, 1.0e-12 );
+
+    using mpm_test::case_reader::errorsOf;
+    const auto with = [&]( const std::string& extra )
+    { return errorsOf( hydraulicCase( "", rain + extra ) ); };
+    EXPECT_NE( with( "flux_m_per_s = 1.0e-5\n" )
+                   .find( "'stages[0].inflows[0].flux_m_per_s': not allowed "
+                          "with hyetograph_mm_per_h" ),
+               std::string::npos )
+        << with( "flux_m_per_s = 1.0e-5\n" );
+    EXPECT_NE( with( "time_function = [[0.0, 1.0]]\n" )
+                   .find( "'stages[0].inflows[0].time_function': not allowed "
+                          "with hyetograph_mm_per_h" ),
+               std::string::npos );
+    std::string negative = rain;
+    negative.replace( negative.find( "30.0" ), 4, "-3.0" );
+    const std::string negative_error =
+        errorsOf( hydraulicCase( "", negative ) );
+    EXPECT_NE( negative_error.find(
+                   "'stages[0].inflows[0].hyetograph_mm_per_h[1][1]'" ),
+               std::string::npos )
+        << negative_error;
+    EXPECT_NE( negative_error.find( "mm/h" ), std::string::npos );
+    const std::string evaporation = errorsOf( hydraulicCase(
+        "", "\n[[stages.inflows]]\nwhere = \"surface_cells\"\nlength_m = "
+            "10.0\nflux_m_per_s = 1.0e-5\ntime_function = [[0.0, 1.0], "
+            "[10.0, -0.5]]\n" ) );
+    EXPECT_NE( evaporation.find( "evaporation is not modelled" ),
+               std::string::npos )
+        << evaporation;
 }
 
 // Polyline points outside the grid are warnings at the point, with the

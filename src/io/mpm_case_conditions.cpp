@@ -98,13 +98,22 @@ PointSelection readSelection( TableReader& r, const bool polyline_allowed )
 //---------------------------------------------------------------------------//
 TimeFunction readTimeFunction( TableReader& r )
 {
+    return readTimeFunction( r, "time_function", Range::any(), "" );
+}
+
+//---------------------------------------------------------------------------//
+TimeFunction readTimeFunction( TableReader& r, const char* key,
+                               const Range& values, const char* unit )
+{
+    const std::string value =
+        *unit ? std::string( "value in " ) + unit : std::string( "factor" );
     const std::string expected =
-        "an array of at least one pair [[t_s, factor], ...] (stage time in "
-        "s, strictly increasing, and a factor)";
-    const toml::node* node = r.find( "time_function" );
+        "an array of at least one pair [[t_s, " + value +
+        "], ...] (stage time in s, strictly increasing, and a " + value + ")";
+    const toml::node* node = r.find( key );
     if ( !node )
         return {};
-    const std::string path = r.keyPath( "time_function" );
+    const std::string path = r.keyPath( key );
     const toml::array* arr = node->as_array();
     if ( !arr || arr->empty() )
     {
@@ -119,13 +128,13 @@ TimeFunction readTimeFunction( TableReader& r )
         if ( !pair || pair->size() != 2 )
         {
             r.diag().mismatch( pair_node, indexed( path, k ),
-                               "a pair [t_s, factor]" );
+                               "a pair [t_s, " + value + "]" );
             return {};
         }
         const auto t = readNumber( *pair->get( 0 ), indexed( path, k ) + "[0]",
                                    Range::atLeast( 0.0 ), "s", r.diag() );
         const auto f = readNumber( *pair->get( 1 ), indexed( path, k ) + "[1]",
-                                   Range::any(), "", r.diag() );
+                                   values, unit, r.diag() );
         if ( !t || !f )
             return {};
         if ( !function.empty() && !( *t > function.back()[0] ) )

@@ -63,6 +63,11 @@ PointSelection readSelection( TableReader& r, bool polyline_allowed );
 //! time_function = [[t_s, factor], ...]: optional, empty if not given.
 TimeFunction readTimeFunction( TableReader& r );
 
+//! `key` = [[t_s, value], ...], times strictly increasing, each value in
+//! `values` (in `unit`): optional, empty if not given.
+TimeFunction readTimeFunction( TableReader& r, const char* key,
+                               const Range& values, const char* unit );
+
 //! [stages.static_stop] at path: end a dynamic stage once static again (an
 //! error for a quasi-static stage).
 StaticStop readStaticStop( const toml::table& table, const std::string& path,

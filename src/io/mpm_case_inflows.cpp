@@ -86,6 +86,72 @@ void readInflowPolyline( TableReader& r, WaterInflow& inflow,
     inflow.length_m = polylineLength( *line, selection.polyline_measure );
 }
 
+//! 1 mm/h in m/s.
+constexpr double mm_per_h = 1.0e-3 / 3600.0;
+
+/*!
+  \brief The time function of a hyetograph's pairs [t_s, i]: each
+  intensity holds from its time to the next pair's (the last to the
+  stage's end), zero before the first; a jump at each pair's time (two
+  pairs at that time: the intensity before, then the one after).
+*/
+TimeFunction hyetographSteps( const TimeFunction& pairs )
+{
+    TimeFunction steps;
+    if ( pairs.empty() )
+        return steps;
+    if ( pairs.front()[0] > 0.0 )
+        steps = { { 0.0, 0.0 }, { pairs.front()[0], 0.0 } };
+    for ( std::size_t k = 0; k < pairs.size(); ++k )
+    {
+        if ( k > 0 )
+            steps.push_back( { pairs[k][0], pairs[k - 1][1] } );
+        steps.push_back( pairs[k] );
+    }
+    return steps;
+}
+
+/*!
+  \brief The rain's intensity and its course in time: flux_m_per_s and an
+  optional time_function with factors >= 0, or hyetograph_mm_per_h (the
+  intensity in mm/h of consecutive blocks of time) instead of both.
+*/
+void readRainIntensity( TableReader& r, WaterInflow& inflow )
+{
+    Diagnostics& diag = r.diag();
+    if ( r.find( "hyetograph_mm_per_h" ) )
+    {
+        for ( const char* key : { "flux_m_per_s", "time_function" } )
+            if ( const toml::node* node = r.find( key ) )
+                diag.keyError( *node, r.keyPath( key ),
+                               "not allowed with hyetograph_mm_per_h: the "
+                               "hyetograph gives the intensity and its "
+                               "course in time" );
+        inflow.flux_m_per_s = mm_per_h;
+        inflow.time_function = hyetographSteps( readTimeFunction(
+            r, "hyetograph_mm_per_h", Range::atLeast( 0.0 ), "mm/h" ) );
+        return;
+    }
+    inflow.flux_m_per_s =
+        r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
+                  "m/s (rainfall intensity, volume per area and time)",
+                  Need::Required )
+            .value_or( 0.0 );
+    inflow.time_function = readTimeFunction( r );
+    for ( std::size_t k = 0; k < inflow.time_function.size(); ++k )
+        if ( inflow.time_function[k][1] < 0.0 )
+        {
+            diag.keyError( *r.find( "time_function" ),
+                           r.keyPath( "time_function" ),
+                           "expected factors >= 0 on a rain (a negative one "
+                           "would take water out: evaporation is not "
+                           "modelled), found " +
+                               formatNumber( inflow.time_function[k][1] ) +
+                               " in pair " + std::to_string( k ) );
+            return;
+        }
+}
+
 } // namespace
 
 //---------------------------------------------------------------------------//
@@ -99,11 +165,7 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
         [&]( TableReader& r, WaterInflow& inflow )
         {
             inflow.points = readSelection( r, true );
-            inflow.flux_m_per_s =
-                r.number( "flux_m_per_s", Range::atLeast( 0.0 ),
-                          "m/s (rainfall intensity, volume per area and time)",
-                          Need::Required )
-                    .value_or( 0.0 );
+            readRainIntensity( r, inflow );
             const toml::node* follow = r.find( "follow_surface_s" );
             const toml::node* length = r.find( "length_m" );
             const bool on_polyline =
@@ -149,7 +211,6 @@ std::vector<WaterInflow> readInflows( const toml::array& array,
                               "m (the length of surface receiving the flux)",
                               Need::Required )
                         .value_or( inflow.length_m );
-            inflow.time_function = readTimeFunction( r );
             inflow.ponding = r.boolean( "ponding", Need::Optional )
                                  .value_or( inflow.ponding );
         } );

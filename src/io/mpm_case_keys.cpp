@@ -40,7 +40,8 @@ const std::vector<CaseTableKeys>& caseTableKeys()
           { "where", "box_m", "traction_pa", "length_m", "time_function" } },
         { "[[stages.inflows]]",
           { "where", "box_m", "polyline_m", "measured_on", "flux_m_per_s",
-            "length_m", "time_function", "ponding", "follow_surface_s" } },
+            "length_m", "time_function", "hyetograph_mm_per_h", "ponding",
+            "follow_surface_s" } },
         { "[probes]", { "interval_s", "points" } } };
     return tables;
 }

@@ -36,6 +36,25 @@ double evaluateTimeFunction( const TimeFunction& function, const double t )
 }
 
 //---------------------------------------------------------------------------//
+double meanOfTimeFunction( const TimeFunction& function, const double t0,
+                           const double t1 )
+{
+    if ( function.empty() || !( t1 > t0 ) )
+        return evaluateTimeFunction( function, t1 );
+    // f is linear between t0, the pairs' times inside (t0, t1) and t1.
+    double integral = 0.0, t = t0, f = evaluateTimeFunction( function, t0 );
+    for ( const auto& pair : function )
+        if ( pair[0] > t0 && pair[0] < t1 )
+        {
+            integral += 0.5 * ( f + pair[1] ) * ( pair[0] - t );
+            t = pair[0];
+            f = pair[1];
+        }
+    integral += 0.5 * ( f + evaluateTimeFunction( function, t1 ) ) * ( t1 - t );
+    return integral / ( t1 - t0 );
+}
+
+//---------------------------------------------------------------------------//
 double initialPorePressure( const BodyConfig& body, const double y )
 {
     if ( !body.initial_pore_pressure_profile.empty() )

@@ -19,6 +19,10 @@ interpolatePiecewiseLinear( const std::vector<std::array<double, 2>>& table,
 //! Value of a piecewise-linear time function at stage time t (1 if empty).
 double evaluateTimeFunction( const TimeFunction& function, double t );
 
+//! Mean of a time function over the stage times [t0, t1], exact (the
+//! trapezoids between its pairs); its value at t1 if t1 <= t0.
+double meanOfTimeFunction( const TimeFunction& function, double t0, double t1 );
+
 //! Initial p_w of a body's point at height y: the body's profile, or
 //! a + b y without one, Pa.
 double initialPorePressure( const BodyConfig& body, double y );

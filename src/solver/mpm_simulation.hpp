@@ -173,11 +173,12 @@ class Simulation : public SimulationState<ExecSpace>
                            _scheme );
     }
 
-    //! The scheme's step dt, the conditions at its end.
+    //! The scheme's step dt, the conditions over it (at its end; the
+    //! inflows at their mean over it).
     PointUpdateReport stepOnce( const double dt, const StepSettings& settings,
                                 const double stage_time_s )
     {
-        this->conditions.update( stage_time_s + dt );
+        this->conditions.update( stage_time_s, stage_time_s + dt );
         const WaveSpeedLimit limit = waveSpeedLimit();
         return std::visit( [&]( auto& s )
                            { return s.advance( *this, dt, settings, limit ); },

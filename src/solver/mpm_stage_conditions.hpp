@@ -129,7 +129,7 @@ struct StageConditions
                 if ( _inflow_counts[f] == 0 )
                     empty_selections.push_back( selectionKey( "inflows", f ) );
         }
-        update( 0.0 );
+        update( 0.0, 0.0 );
     }
 
     /*!
@@ -228,8 +228,13 @@ struct StageConditions
         next_surface_update_s = t + _follow_interval_s;
     }
 
-    //! Values of every condition at stage time t.
-    void update( const double t )
+    /*!
+      \brief Values of every condition over the step from stage time t0 to
+      t: the prescribed p_w and the loads at t, the inflows' rates at their
+      mean over the step (meanOfTimeFunction), so a step takes in exactly
+      the water of its time span however long it is.
+    */
+    void update( const double t0, const double t )
     {
         if ( t >= next_surface_update_s )
             followSurface( t );
@@ -257,14 +262,14 @@ struct StageConditions
         Kokkos::deep_copy( load_force, f_h );
         auto rate_h = Kokkos::create_mirror_view( inflow_rate );
         for ( std::size_t f = 0; f < inflows.size(); ++f )
-            rate_h( f ) =
-                inflow_volumes[f] > 0.0 && !inflows[f].onGridEdge()
-                    ? inflows[f].flux_m_per_s * inflows[f].length_m *
-                          evaluateTimeFunction( inflows[f].time_function, t ) /
-                          inflow_volumes[f]
-                    : 0.0;
+            rate_h( f ) = inflow_volumes[f] > 0.0 && !inflows[f].onGridEdge()
+                              ? inflows[f].flux_m_per_s * inflows[f].length_m *
+                                    meanOfTimeFunction(
+                                        inflows[f].time_function, t0, t ) /
+                                    inflow_volumes[f]
+                              : 0.0;
         Kokkos::deep_copy( inflow_rate, rate_h );
-        updateEdgeFluxes( t );
+        updateEdgeFluxes( t0, t );
     }
 
   private:
@@ -354,9 +359,9 @@ struct StageConditions
             }
     }
 
-    //! inflow_flux_i at stage time t: each edge inflow's flux along the
-    //! inward normal of its edge's nodes.
-    void updateEdgeFluxes( const double t )
+    //! inflow_flux_i over the step from stage time t0 to t: each edge
+    //! inflow's mean flux along the inward normal of its edge's nodes.
+    void updateEdgeFluxes( const double t0, const double t )
     {
         bool any = false;
         for ( const WaterInflow& inflow : inflows )
@@ -373,7 +378,7 @@ struct StageConditions
             if ( !inflow.onGridEdge() )
                 continue;
             const double q = inflow.flux_m_per_s *
-                             evaluateTimeFunction( inflow.time_function, t );
+                             meanOfTimeFunction( inflow.time_function, t0, t );
             using Kind = PointSelection::Kind;
             const Kind kind = inflow.points.kind;
             const bool vertical =

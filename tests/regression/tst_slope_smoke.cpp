@@ -130,7 +130,7 @@ TYPED_TEST( SlopeSmoke, fixed_inflows_keep_their_points_when_the_surface_moves )
     for ( std::size_t p = 0; p < x_h.extent( 0 ); ++p )
         x_h( p, 1 ) -= 0.25;
     Kokkos::deep_copy( sim.particles.x_p, x_h );
-    sim.conditions.update( 0.1 );
+    sim.conditions.update( 0.0, 0.1 );
     const std::vector<int> after = inflowOf();
     for ( std::size_t p = 0; p < before.size(); ++p )
         EXPECT_EQ( after[p] == 0, before[p] == 0 ) << "point " << p;

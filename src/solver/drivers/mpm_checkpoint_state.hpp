@@ -200,7 +200,8 @@ void restoreCheckpoint( Simulation<ExecSpace>& sim, const CaseConfig& config,
         conditions.next_surface_update_s = checkpoint.next_surface_update_s;
         conditions.load_force = LoadForceView<ExecSpace>(
             "load_force", conditions.load_groups.size() );
-        conditions.update( loop.progress.stage_time_s );
+        conditions.update( loop.progress.stage_time_s,
+                           loop.progress.stage_time_s );
     }
     sim.time = checkpoint.time_s;
     sim.step = checkpoint.step;
