@@ -3,6 +3,7 @@
 // flow's steps start short at the start of the rain, when it takes in water
 // fastest.
 #include <mpm_test_backends.hpp>
+#include <mpm_test_toml.hpp>
 
 #include <io/mpm_case_reader.hpp>
 #include <solver/drivers/mpm_run_stages.hpp>
@@ -53,25 +54,11 @@ poisson_ratio = 0.33
 cohesion_peak_pa = 20.0e3
 friction_angle_deg = 20.0
 dilation_angle_deg = 0.1
-[materials.retention]
-model = "van_genuchten"
-alpha_per_pa = 4.4e-4
-n = 3.04
-residual_saturation = 0.23
-[[bodies]]
-material = "soil"
-polygon_m = [[0.0, 0.0], [0.5, 0.0], [0.5, 5.0], [0.0, 5.0]]
-initial_pore_pressure_pa = -50.0e3
-[[boundaries]]
-where = "left"
-condition = "fix_x"
-[[boundaries]]
-where = "right"
-condition = "fix_x"
-[[boundaries]]
-where = "bottom"
-condition = "fixed"
-[solver]
+)" + mpm_test::paperRetentionToml() +
+           mpm_test::soilBodyToml(
+               "[[0.0, 0.0], [0.5, 0.0], [0.5, 5.0], [0.0, 5.0]]" ) +
+           "initial_pore_pressure_pa = -50.0e3\n" + mpm_test::rollersToml() +
+           mpm_test::boundaryToml( "bottom", "fixed" ) + R"([solver]
 )" + solver +
            R"(
 [[stages]]
