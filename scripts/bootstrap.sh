@@ -7,6 +7,10 @@
 # Idempotent: a second run checks and returns in seconds.
 # Prints the Kokkos prefix on its last line of stdout (for scripts that need it).
 set -euo pipefail
+if [ $# -gt 0 ]; then
+    echo "usage: scripts/bootstrap.sh   (no arguments; RAINSLIDE_CACHE sets the Kokkos cache folder)" >&2
+    exit 2
+fi
 
 KOKKOS_VERSION=3.4.01
 CACHE_DIR="${RAINSLIDE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/rainslide}"

@@ -1,4 +1,4 @@
-# Shared by scripts/run.sh and scripts/test.sh: bootstrap and configure.
+# Shared by scripts/run.sh, test.sh, slope_study.sh and fos_history.sh: bootstrap and configure.
 # Usage: source scripts/common.sh; configure_build BUILD_DIR [cmake args...]
 set -euo pipefail
 RAINSLIDE_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -118,15 +118,19 @@ def main():
                         metavar="DIR", help="also draw the FS of these histories")
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
+    if not args.half_width_m > 0.0:
+        parser.error(f"--half-width-m must be > 0 m, got {args.half_width_m:g}")
     others = [fos_series(folder) for folder in args.others]
     history, rows = read_history(args.dir)
     states = read_states(os.path.join(args.dir, "states.h5"))
     if len(states) < len(rows):
         fail(f"{args.dir}/states.h5: {len(states)} states for {len(rows)} rows")
     table = []
-    for row, (t, x, p_w) in zip(rows, states):
+    for k, (row, (t, x, p_w)) in enumerate(zip(rows, states)):
         depths = [front_depth(x, p_w, c, args.half_width_m, args.wet_pa)
                   for c in args.columns]
+        if not isinstance(row, dict) or not isinstance(row.get("folder"), str):
+            fail(f"{args.dir}/fos_history.json: rows[{k}] has no 'folder'")
         fos_dir = os.path.join(args.dir, row["folder"])
         fos = read_json(os.path.join(fos_dir, "fos.json"))
         extent = None
@@ -145,14 +149,18 @@ def main():
                 if extent else "none")
         lines.append(f"| {t:.2f} | {fs_text} | {br} | "
                      + " | ".join(f"{d:.2f}" for d in depths)
-                     + f" | {mech} | {wall:.0f} |")
+                     + f" | {mech} | {'–' if wall is None else f'{wall:.0f}'} |")
     below = [t for t, fs, *_ in table if fs is not None and fs < 1.0]
     lines.append("")
     lines.append(f"FS first below 1 at t = {below[0]:.2f} s" if below
                  else "FS stays at or above 1 at every search time")
     text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.dir, "fos_history.md"), "w") as f:
-        f.write(text)
+    table_path = os.path.join(args.dir, "fos_history.md")
+    try:
+        with open(table_path, "w") as f:
+            f.write(text)
+    except OSError as error:
+        fail(f"cannot write {table_path}: {error}")
     print(text, end="")
 
     import matplotlib
@@ -182,7 +190,10 @@ def main():
     ax.legend(handles[0] + more[0], handles[1] + more[1], loc="best", fontsize=8)
     figure = args.out or os.path.join(args.dir, "fos_history.png")
     fig.tight_layout()
-    fig.savefig(figure, dpi=120)
+    try:
+        fig.savefig(figure, dpi=120)
+    except OSError as error:
+        fail(f"cannot write {figure}: {error}")
     print(f"figure: {figure}")
 
 

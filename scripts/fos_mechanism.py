@@ -65,7 +65,10 @@ def main():
     axes[0].set_title(f"{title}; mechanism at F = {fos['mechanism']['factor']:.4g}")
     fig.tight_layout()
     out = args.out or os.path.join(args.dir, "mechanism.png")
-    fig.savefig(out, dpi=120)
+    try:
+        fig.savefig(out, dpi=120)
+    except OSError as error:
+        fail(f"cannot write {out}: {error}")
     print(out)
 
 

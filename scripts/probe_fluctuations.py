@@ -8,7 +8,7 @@ ringing), over the rows of the last stage: the mean p_w, the RMS and the
 largest deviation of p_w from its running mean over --window-s (centred), the
 mean speed of the solid and the RMS of its velocity's deviation from the
 running mean, and the growth of the equivalent plastic strain
-(docs/speed-vs-error.md, session 34, compares the two schemes' toe with it).
+(docs/speed-vs-error.md compares the two schemes' toe with it).
 
   scripts/probe_fluctuations.py RUN [RUN ...] [--window-s 0.02] [--json]
 
@@ -23,8 +23,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from slope_run import InputError, read_probes, run_reporting_errors  # noqa: E402
+from rainslide_tools.slope_run import InputError, read_probes, run_reporting_errors
 
 # The columns read, in the order of a probe's values (without stage and name).
 COLUMNS = ("time_s", "stage", "name", "p_w_pa", "v_x_m_per_s", "v_y_m_per_s",

@@ -40,6 +40,8 @@ def stage_snapshots(snapshots):
 def region_history(run, x_range, y_range, every_s, yield_strain, yield_points):
     """Rows of the region's history (dicts) and its yield onset (s or None)."""
     path = os.path.join(run, "particles.h5")
+    if not os.path.isfile(path):
+        raise ValueError(f"{path}: file not found")
     with h5py.File(path, "r") as f:
         snapshots = f["snapshots"]
         start_key, keys = stage_snapshots(snapshots)

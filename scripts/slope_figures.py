@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Figures of a rainslide slope run in the style of Wang, Vardon & Hicks (2018), §3.
 
-Usage: slope_figures.py DIR [--out FIGDIR] [--times 10,16.25,18.75,25] [--stage NAME]
+Usage: slope_figures.py DIR [--out FIGDIR] [--times T1,T2,...] [--stage NAME]
 
 Reads DIR/particles.h5 (DIR/metrics.json and DIR/probes.csv if present) and
 writes into FIGDIR (default DIR/figures):
@@ -15,7 +15,13 @@ writes into FIGDIR (default DIR/figures):
                        and the sliding groups of slope_metrics.py at the end.
 Times are stage times (t = 0 at the start of the analysed stage: the rainfall,
 i.e. stage 2, of a slope case); each panel uses the nearest snapshot and says
-which. Default --times: 10,16.25,18.75,25 for two-phase runs, 0.5,2.0 for dry.
+which. Default --times: for a run whose metrics.json verdict says it failed,
+5 s before the first slide and each onset (at most four panels); otherwise
+10,16.25,18.75,25 for two-phase runs, 0.5,2.0 for dry ones.
+Colour scales: eps_p_bar logarithmic from 1e-3 (where the soil yields) to 1
+(--eps-scale linear for 0 to --eps-max); p_w from -50 kPa to the hydrostatic
+pressure at the base of the deepest column of the body, rho_w g times its
+height (--pw-range to set both).
 Points are drawn as squares of the initial point spacing at their current
 positions; the initial ground surface is the thin grey line.
 Errors in the input give one line "slope_figures: error: ..." and exit code 2.
@@ -28,8 +34,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import slope_metrics as sm  # noqa: E402
+import slope_metrics as sm
 
 DPI = 110
 PROBE_COLUMNS = ["time_s", "stage", "name", "point_id", "x_m", "y_m", "u_x_m", "u_y_m",
@@ -58,7 +63,7 @@ def parse_floats(text, what, count=None):
 class Plotter:
     """Shared state: the run, the point spacing, extents and the initial surface."""
 
-    def __init__(self, run, out_dir, eps_max=1.0, eps_log=False, pw_range=(-50.0, 10.0)):
+    def __init__(self, run, out_dir, eps_max=1.0, eps_log=True, pw_range=None):
         self.run = run
         self.out = out_dir
         self.spacing = run.point_spacing()
@@ -66,7 +71,7 @@ class Plotter:
         self.surface = sm.surface_profile(x0, self.spacing)
         self.eps_max = eps_max
         self.eps_log = eps_log
-        self.pw_range = pw_range
+        self.pw_range = pw_range or (-50.0, self.hydrostatic_max_kpa(x0))
         self.interval = self._typical_interval()
         self._noted = set()  # requested times already reported as far from a snapshot
         # Extent: every point of the stage's snapshots, plus the initial state.
@@ -79,6 +84,16 @@ class Plotter:
         pad = 2.0 * self.spacing
         self.xlim = (lo[0] - pad, hi[0] + pad)
         self.ylim = (lo[1] - pad, hi[1] + pad)
+
+    def hydrostatic_max_kpa(self, x0):
+        """rho_w g (kPa) times the tallest column of the initial body (points in
+        vertical strips one point spacing wide, plus one spacing)."""
+        strips = np.floor(x0[:, 0] / self.spacing).astype(np.int64)
+        order = np.argsort(strips, kind="stable")
+        strips, y = strips[order], x0[order, 1]
+        starts = np.flatnonzero(np.r_[True, np.diff(strips) != 0])
+        height = np.maximum.reduceat(y, starts) - np.minimum.reduceat(y, starts)
+        return 9.81 * (float(height.max()) + self.spacing)
 
     def _typical_interval(self):
         t = [s.t for s in self.run.stage_snapshots]
@@ -183,6 +198,13 @@ class Plotter:
             return colors.LogNorm(vmin=1e-3 * self.eps_max, vmax=self.eps_max, clip=True)
         return colors.Normalize(vmin=0.0, vmax=self.eps_max)
 
+    def eps_cmap(self):
+        """magma_r, with eps_p_bar = 0 (masked on the log scale) in its lowest colour."""
+        matplotlib, _ = _mpl()
+        cmap = matplotlib.colormaps["magma_r"].copy()
+        cmap.set_bad(cmap(0.0))
+        return cmap
+
     def pw_norm(self):
         from matplotlib import colors
         lo, hi = self.pw_range
@@ -206,7 +228,7 @@ class Plotter:
                 axs[0].set_title(self.title(t, snap, "$p_w$"), fontsize=8)
                 pw_axes.append(axs[0])
             eps = self.run.field(snap, "plastic_shear_strain")
-            eps_pc = self.draw(axs[-1], snap, eps, "magma_r", self.eps_norm())
+            eps_pc = self.draw(axs[-1], snap, eps, self.eps_cmap(), self.eps_norm())
             axs[-1].set_title(self.title(t, snap, r"$\bar\epsilon_p$"), fontsize=8)
             eps_axes.append(axs[-1])
         # Horizontal colour bars below all panels (p_w and eps rows alternate).
@@ -218,7 +240,8 @@ class Plotter:
             cb.ax.tick_params(labelsize=7)
         cb = fig.colorbar(eps_pc, ax=all_axes, location="bottom", shrink=0.5, aspect=50,
                           extend="max", pad=0.01)
-        cb.set_label(r"plastic shear strain invariant $\bar\epsilon_p$", fontsize=8)
+        cb.set_label(r"plastic shear strain invariant $\bar\epsilon_p$"
+                     + (" (log scale)" if self.eps_log else ""), fontsize=8)
         cb.ax.tick_params(labelsize=7)
         fig.suptitle(f"{self.run.case_name()}: stage '{self.run.stage}', t since its start"
                      + ("" if two else " (dry / total stress: no $p_w$)"), fontsize=9)
@@ -254,7 +277,7 @@ class Plotter:
         fig, grid = self.layout(1, 3)
         axs = grid[0]
         eps = self.run.field(snap, "plastic_shear_strain")
-        pc = self.draw(axs[0], snap, eps, "magma_r", self.eps_norm())
+        pc = self.draw(axs[0], snap, eps, self.eps_cmap(), self.eps_norm())
         axs[0].set_title(self.title(None, snap, r"$\bar\epsilon_p$"), fontsize=8)
         cb = fig.colorbar(pc, ax=axs[0], shrink=0.9, extend="max")
         cb.set_label(r"$\bar\epsilon_p$", fontsize=8)
@@ -337,16 +360,30 @@ class Plotter:
         return self.save(fig, "fig9_vw_over_K.png")
 
 
+def default_times(run):
+    """Stage times of the panels: around the slides of the run's verdict if it
+    failed in the analysed stage, else the paper's times (two-phase) or 0.5, 2 s."""
+    verdict = (run.metrics or {}).get("verdict") or {}
+    onsets = [o["stage_time_s"] for o in verdict.get("onsets", [])
+              if o.get("stage") == run.stage]
+    if onsets:
+        return [max(0.0, onsets[0] - 5.0)] + onsets[:3]
+    return [10.0, 16.25, 18.75, 25.0] if run.two_phase else [0.5, 2.0]
+
+
 def main(argv=None):
     signal.signal(signal.SIGPIPE, signal.SIG_DFL)
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("dir", help="results folder of a run")
     p.add_argument("--out", help="figure folder (default DIR/figures)")
-    p.add_argument("--times", help="stage times, comma-separated (default 10,16.25,18.75,25 "
-                                   "for two-phase runs, 0.5,2.0 for dry runs)")
+    p.add_argument("--times", help="stage times, comma-separated (default: around the slides "
+                                   "of a failed run, else 10,16.25,18.75,25 for two-phase runs, "
+                                   "0.5,2.0 for dry runs)")
     p.add_argument("--eps-max", type=float, default=1.0, help="upper colour limit of eps_p_bar")
-    p.add_argument("--eps-log", action="store_true", help="log colour scale for eps_p_bar")
-    p.add_argument("--pw-range", default="-50,10", help="p_w colour limits in kPa (default -50,10)")
+    p.add_argument("--eps-scale", choices=("log", "linear"), default="log",
+                   help="colour scale of eps_p_bar: log (1e-3 to --eps-max, default) or linear")
+    p.add_argument("--pw-range", help="p_w colour limits in kPa, 'LOW,HIGH' (default -50 to "
+                                      "the hydrostatic pressure at the base of the body)")
     p.add_argument("--sxy-lim", type=float, help="sigma_xy colour limit in kPa (default: the 99th "
                                                  "percentile of |sigma_xy|, rounded up to 5 kPa)")
     sm.add_options(p)
@@ -354,17 +391,16 @@ def main(argv=None):
 
     def body():
         toe, opts = sm.options_from(args)
-        pw_range = tuple(parse_floats(args.pw_range, "--pw-range", 2))
+        pw_range = tuple(parse_floats(args.pw_range, "--pw-range", 2)) if args.pw_range else None
         run = sm.Run(args.dir, args.stage)
         try:
-            times = parse_floats(args.times, "--times") if args.times else (
-                [10.0, 16.25, 18.75, 25.0] if run.two_phase else [0.5, 2.0])
+            times = parse_floats(args.times, "--times") if args.times else default_times(run)
             out = args.out or os.path.join(args.dir, "figures")
             try:
                 os.makedirs(out, exist_ok=True)
             except OSError as e:
                 raise sm.InputError(f"{out}: cannot create the figure folder ({e})")
-            plotter = Plotter(run, out, args.eps_max, args.eps_log, pw_range)
+            plotter = Plotter(run, out, args.eps_max, args.eps_scale == "log", pw_range)
             plotter.fig_pw_epsp(times)
             plotter.fig_shear_stress(times, args.sxy_lim)
             plotter.fig_final(sm.slope_metrics(run, toe, **opts))

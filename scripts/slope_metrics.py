@@ -47,11 +47,12 @@ import sys
 
 import numpy as np
 
-from slope_groups import connected_groups, derive_toe_x, sliding_groups, surface_profile  # noqa: F401
-from slope_pressure import crest_hydrostatic, pore_pressure_pulses, pressure_peak  # noqa: F401
-from slope_run import (METRICS, PARTICLES, Frame, InputError, Run, Snapshot, read_metrics,  # noqa: F401
-                       read_probes, run_reporting_errors, write_metrics_key)
-from slope_run import json_num as _json_num
+from rainslide_tools.slope_groups import (connected_groups, derive_toe_x, sliding_groups,  # noqa: F401
+                                          surface_profile)
+from rainslide_tools.slope_pressure import crest_hydrostatic, pore_pressure_pulses, pressure_peak  # noqa: F401
+from rainslide_tools.slope_run import (METRICS, PARTICLES, Frame, InputError, Run, Snapshot,  # noqa: F401
+                                       read_metrics, read_probes, run_reporting_errors, write_metrics_key)
+from rainslide_tools.slope_run import json_num as _json_num
 
 DEFAULT_TOE_X = 56.33
 

@@ -9,10 +9,14 @@
 # Extra arguments go to every `rainslide run` (e.g. --threads 2).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+cases=${SLOPE_CASES:-"slope_total_stress slope_base slope_base_sudden slope_phi15 slope_phi30 slope_cr001 slope_cr5 slope_rain_surface slope_base_fine"}
+for case in $cases; do
+    [ -f "$RAINSLIDE_ROOT/cases/$case.toml" ] ||
+        { echo "slope_study: error: no case file cases/$case.toml (SLOPE_CASES names cases/<name>.toml)" >&2; exit 2; }
+done
 bootstrap
 build_release
 cd "$RAINSLIDE_ROOT"
-cases=${SLOPE_CASES:-"slope_total_stress slope_base slope_base_sudden slope_phi15 slope_phi30 slope_cr001 slope_cr5 slope_rain_surface slope_base_fine"}
 dirs=()
 for case in $cases; do
     echo "== $case" >&2

@@ -22,8 +22,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import slope_metrics as sm  # noqa: E402
+import slope_metrics as sm
 
 
 def case_series(run_dir, recompute=False, stage=None, toe_x=sm.DEFAULT_TOE_X, opts=None):
@@ -120,13 +119,19 @@ def main(argv=None):
         out_dir = os.path.dirname(os.path.abspath(args.out))
         if not os.path.isdir(out_dir):
             raise sm.InputError(f"{out_dir}: output folder not found")
-        fig.savefig(args.out, dpi=110)
+        try:
+            fig.savefig(args.out, dpi=110)
+        except OSError as e:
+            raise sm.InputError(f"{args.out}: cannot write ({e})")
         plt.close(fig)
         if args.table:
             rows = [table_row(label, slope, sm.read_metrics(d, required=True))
                     for (label, slope), d in zip(cases, args.dirs)]
-            with open(args.table, "w") as f:
-                f.write(TABLE_HEADER + "\n".join(rows) + "\n")
+            try:
+                with open(args.table, "w") as f:
+                    f.write(TABLE_HEADER + "\n".join(rows) + "\n")
+            except OSError as e:
+                raise sm.InputError(f"{args.table}: cannot write ({e})")
         print(f"wrote {args.out} ({os.path.getsize(args.out) / 1024:.0f} kB)")
 
     return sm.run_reporting_errors("slope_summary", body)

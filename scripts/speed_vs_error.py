@@ -45,11 +45,17 @@ import tomllib
 
 import numpy as np
 
-from speed_vs_error_cases import (ROOT, VERIFY, liakopoulos_case, liakopoulos_plan, load_module,
-                                  terzaghi_case, terzaghi_physics, terzaghi_plan)
-from speed_vs_error_report import fmt, write_outputs
+from rainslide_tools.speed_vs_error_cases import (ROOT, VERIFY, liakopoulos_case, liakopoulos_plan,
+                                                  load_module, terzaghi_case, terzaghi_physics, terzaghi_plan)
+from rainslide_tools.speed_vs_error_report import fmt, write_outputs
 
 PYTHON = "/usr/bin/python3"
+PROBLEMS = ("terzaghi", "liakopoulos")
+
+
+def fail(message):
+    print(f"speed_vs_error: error: {message}", file=sys.stderr)
+    sys.exit(2)
 
 # --------------------------------------------------------------------------- #
 # Running and scoring.
@@ -213,20 +219,38 @@ def main():
                     "regular expression (e.g. to re-time runs that shared the machine)")
     ap.add_argument("--dry-run", action="store_true", help="write the case files and list the runs only")
     args = ap.parse_args()
+    problems = [p.strip() for p in args.problems.split(",") if p.strip()]
+    unknown = [p for p in problems if p not in PROBLEMS]
+    if unknown or not problems:
+        fail(f"--problems: expected a comma-separated list of {', '.join(PROBLEMS)}, got '{args.problems}'")
+    for option, pattern in (("--only", args.only), ("--rerun", args.rerun)):
+        try:
+            re.compile(pattern or "")
+        except re.error as error:
+            fail(f"{option}: not a regular expression ('{pattern}': {error})")
     out_root = os.path.abspath(args.out)
-    os.makedirs(out_root, exist_ok=True)
+    try:
+        os.makedirs(out_root, exist_ok=True)
+    except OSError as error:
+        fail(f"{out_root}: cannot create the output folder ({error})")
 
     if args.report_only:
-        with open(os.path.join(out_root, "runs.json")) as f:
-            data = json.load(f)
-        write_outputs(out_root, data["runs"], data["meta"], args.png)
+        runs_json = os.path.join(out_root, "runs.json")
+        try:
+            with open(runs_json) as f:
+                data = json.load(f)
+            runs, meta = data["runs"], data["meta"]
+        except (OSError, ValueError) as error:
+            fail(f"cannot read {runs_json} ({error}); run the sweep first")
+        except (KeyError, TypeError):
+            fail(f"{runs_json}: no 'runs' and 'meta' (not written by speed_vs_error.py)")
+        write_outputs(out_root, runs, meta, args.png)
         return 0
 
     binary = os.path.abspath(args.binary)
     if not args.dry_run and not os.access(binary, os.X_OK):
-        raise SystemExit(f"{binary}: not an executable; build it with `scripts/run.sh check cases/terzaghi.toml` "
-                         f"or pass --binary")
-    problems = [p.strip() for p in args.problems.split(",") if p.strip()]
+        fail(f"{binary}: not an executable; build it with `scripts/run.sh check cases/terzaghi.toml` "
+             f"or pass --binary")
     bases = {}
     for p in problems:
         with open(os.path.join(ROOT, "cases", f"{p}.toml")) as f:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Side-by-side panel of slope runs against the paper's Fig. 7 sequence (issue 10).
+"""Side-by-side panel of slope runs against the paper's Fig. 7 sequence.
 
 Usage: study_panel.py OUT.png LABEL=DIR [LABEL=DIR ...] [--frame LABEL=deg,dx,dy]
 
@@ -19,8 +19,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from slope_run import Frame, InputError, Run, run_reporting_errors  # noqa: E402
+from rainslide_tools.slope_run import Frame, InputError, Run, run_reporting_errors
 
 PAPER = (
     (10.0, "initial superficial failure at the\nslope surface near its steepest part,\n"
@@ -107,7 +106,10 @@ def main():
                      f"wetted (p_w >= {WET_PA / 1e3:g} kPa), red eps_p_bar > {SLIDE_EPS:g}",
                      fontsize=9)
         fig.tight_layout()
-        fig.savefig(args.out, dpi=130)
+        try:
+            fig.savefig(args.out, dpi=130)
+        except OSError as e:
+            raise InputError(f"{args.out}: cannot write ({e})")
         print(f"written {args.out}")
 
     return run_reporting_errors("study_panel", body)

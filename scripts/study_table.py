@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Summary table of the slope study's controlled experiments (issue 10).
+"""Summary table of the slope study's controlled experiments.
 
 Usage: study_table.py DIR [DIR ...] [--out MD] [--fos-root ROOT]
 
@@ -25,8 +25,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from slope_run import Frame  # noqa: E402
+from rainslide_tools.slope_run import Frame
 
 PLACES = (("toe of the cut", (56.3323, 1.0)), ("crest of the cut", (54.4671, 5.0)),
           ("crest/slope corner", (15.0, 19.3648)))
@@ -133,6 +132,8 @@ def main():
     parser.add_argument("--fos-root", default=None,
                         help="folder of the runs' FS histories (one subfolder per DIR name)")
     args = parser.parse_args()
+    if args.fos_root and not os.path.isdir(args.fos_root):
+        fail(f"--fos-root: {args.fos_root}: folder not found")
     rows = [row(d) for d in args.dirs]
     if args.fos_root:
         fos_head, fos_cells = fos_column([fos_history(args.fos_root, d) for d in args.dirs])
@@ -153,8 +154,11 @@ def main():
         lines.append("| " + " | ".join(cells) + " |")
     text = "\n".join(lines) + "\n"
     if args.out:
-        with open(args.out, "w") as f:
-            f.write(text)
+        try:
+            with open(args.out, "w") as f:
+                f.write(text)
+        except OSError as error:
+            fail(f"cannot write {args.out}: {error}")
     print(text, end="")
 
 

@@ -240,3 +240,28 @@ TEST( FosCriterion,
     EXPECT_TRUE( dry.pore_pressures.empty() );
     EXPECT_DOUBLE_EQ( dry.materials[0].permeability_m2, 4.5e-9 );
 }
+
+//---------------------------------------------------------------------------//
+// The trials use B-bar unless the case sets solver.bbar, and the run goes on
+// with its own setting afterwards.
+TEST( FosTrialBbar, on_unless_the_case_sets_it )
+{
+    mpm::SolverConfig run; // the run: no B-bar
+    mpm::SolverConfig case_solver;
+    {
+        const mpm::BbarForTrial trial( run, case_solver ); // key absent
+        EXPECT_TRUE( run.bbar );
+    }
+    EXPECT_FALSE( run.bbar );
+    case_solver.bbar_given = true; // solver.bbar = false in the case
+    {
+        const mpm::BbarForTrial trial( run, case_solver );
+        EXPECT_FALSE( run.bbar );
+    }
+    run.bbar = case_solver.bbar = true; // solver.bbar = true
+    {
+        const mpm::BbarForTrial trial( run, case_solver );
+        EXPECT_TRUE( run.bbar );
+    }
+    EXPECT_TRUE( run.bbar );
+}

@@ -12,6 +12,7 @@ Metrics per reference time (5, 10, 20, 40, 80, 120 min):
   outflow_m_per_s Darcy flux n S (v_w - v_s) out of the bottom, from the points
                   of the bottom cell, against the reference (tolerance 10 %);
   settlement_m    top settlement against the reference u_y(top).
+Errors in the input give one line "liakopoulos: error: ..." and exit code 2.
 """
 import argparse
 import csv
@@ -26,6 +27,12 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_REFERENCE = os.path.normpath(os.path.join(HERE, "..", "..", "tests", "data", "reference"))
 TIMES_MIN = [5, 10, 20, 40, 80, 120]
+REFERENCE_FILES = ("liakopoulos_pressure_profiles.csv", "liakopoulos_outflow.csv")
+
+
+def fail(message):
+    print(f"liakopoulos: error: {message}", file=sys.stderr)
+    sys.exit(2)
 
 
 def read_reference(folder):
@@ -45,8 +52,6 @@ def read_reference(folder):
 def snapshot_at(h5, stage, stage_time):
     best, best_dt = None, 1e300
     for key, g in h5["snapshots"].items():
-        if g.attrs["stage"].decode() if isinstance(g.attrs["stage"], bytes) else g.attrs["stage"] != stage:
-            pass
         name = g.attrs["stage"]
         name = name.decode() if isinstance(name, bytes) else str(name)
         if name != stage:
@@ -54,8 +59,10 @@ def snapshot_at(h5, stage, stage_time):
         dt = abs(g.attrs["stage_time_s"] - stage_time)
         if dt < best_dt:
             best, best_dt = g, dt
-    if best is None or best_dt > 1.0:
-        raise SystemExit(f"no snapshot of stage '{stage}' at {stage_time} s (nearest {best_dt} s away)")
+    if best is None:
+        fail(f"no snapshot of stage '{stage}' (see --stage)")
+    if best_dt > 1.0:
+        fail(f"no snapshot of stage '{stage}' at {stage_time} s (nearest {best_dt} s away)")
     return best
 
 
@@ -107,13 +114,16 @@ def compare(results, reference, stage, cell_size):
 
 def write_metrics(results, section):
     path = os.path.join(results, "metrics.json")
-    with open(path) as f:
-        metrics = json.load(f)
-    metrics["verification"] = section
-    fd, tmp = tempfile.mkstemp(dir=results, prefix=".metrics.", suffix=".json")
-    with os.fdopen(fd, "w") as f:
-        json.dump(metrics, f, indent=2)
-    os.replace(tmp, path)
+    try:
+        with open(path) as f:
+            metrics = json.load(f)
+        metrics["verification"] = section
+        fd, tmp = tempfile.mkstemp(dir=results, prefix=".metrics.", suffix=".json")
+        with os.fdopen(fd, "w") as f:
+            json.dump(metrics, f, indent=2)
+        os.replace(tmp, path)
+    except (OSError, ValueError) as error:
+        fail(f"cannot update {path}: {error}")
 
 
 def main():
@@ -123,11 +133,31 @@ def main():
     parser.add_argument("--stage", default="drainage")
     parser.add_argument("--cell-size", type=float, default=None, help="m (default: from metrics.json)")
     args = parser.parse_args()
+    if args.cell_size is not None and not args.cell_size > 0.0:
+        parser.error(f"--cell-size must be > 0 m, got {args.cell_size:g}")
+    if not os.path.isdir(args.results):
+        fail(f"{args.results}: results folder not found")
+    metrics_path = os.path.join(args.results, "metrics.json")
+    try:
+        with open(metrics_path) as f:
+            metrics = json.load(f)
+    except (OSError, ValueError) as error:
+        fail(f"cannot read {metrics_path}: {error}")
     cell_size = args.cell_size
     if cell_size is None:
-        with open(os.path.join(args.results, "metrics.json")) as f:
-            cell_size = json.load(f)["cell_size_m"]
-    per_time = compare(args.results, args.reference, args.stage, cell_size)
+        cell_size = metrics.get("cell_size_m") if isinstance(metrics, dict) else None
+        if not isinstance(cell_size, (int, float)) or not cell_size > 0.0:
+            fail(f"{metrics_path}: no positive 'cell_size_m' (or pass --cell-size)")
+    for name in REFERENCE_FILES:
+        if not os.path.isfile(os.path.join(args.reference, name)):
+            fail(f"{os.path.join(args.reference, name)}: reference file not found")
+    h5_path = os.path.join(args.results, "particles.h5")
+    if not os.path.isfile(h5_path):
+        fail(f"{h5_path}: file not found")
+    try:
+        per_time = compare(args.results, args.reference, args.stage, cell_size)
+    except (OSError, KeyError, ValueError) as error:
+        fail(f"cannot compare {h5_path} with the reference in {args.reference}: {type(error).__name__}: {error}")
     worst = max(e["relative_error"] for e in per_time.values())
     worst_cell = max(e["cell_relative_error"] for e in per_time.values())
     worst_q = max(e["outflow_relative_error"] for e in per_time.values())

@@ -356,6 +356,9 @@ struct SolverConfig
     bool water_relative_flip = true;
     //! Cell-averaged volumetric strain rate (B-bar).
     bool bbar = false;
+    //! solver.bbar is set in the case file; if not, the trials of
+    //! `rainslide fos` use B-bar (FosTrialRunner).
+    bool bbar_given = false;
     /*!
       A point dilated to J = V / V0 > 1 has the moduli K / J and G / J, so
       its P-wave speed, and the stable step, do not grow as it stretches

@@ -71,6 +71,7 @@ class CaseParser
             TableReader r( *t, "solver", _diag );
             Impl::readConfigKeys( r, Impl::solverKeys(), "[solver]",
                                   _config.solver );
+            _config.solver.bbar_given = r.find( "bbar" ) != nullptr;
             // The semi-implicit and seepage schemes solve for the pore
             // pressure.
             if ( _config.solver.scheme != TwoPhaseScheme::Explicit )

@@ -267,7 +267,7 @@ class Scanner
             // An '=' after a value's text is part of that (invalid) value
             // for toml++, which reads a quote after it outside any string
             // and reaches __builtin_unreachable on a non-ASCII character
-            // there: "x = -805='''...'''" (fuzzer, session 11).
+            // there: "x = -805='''...'''" (a fuzzer finding).
             if ( !_key )
                 _prev = '0';
             _key = false;

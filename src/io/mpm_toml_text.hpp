@@ -26,9 +26,9 @@ bool endsWithDate( std::string_view text, std::size_t pos );
   date YYYY-MM-DD before it is not followed by the start of a time, else
   "". toml++ 3.3 breaks the preconditions of its parsers on such text (an
   assertion in debug builds, undefined behaviour in release ones):
-  "1978-05-27T:" calls its time parser on the ':' (fuzzer, session 10);
+  "1978-05-27T:" calls its time parser on the ':' (a fuzzer finding);
   "1979-05-27 7" before a blank or a ',' ']' '}' is read as a date, then
-  its value parser is called on that terminator (fuzzer, session 11). After
+  its value parser is called on that terminator (a fuzzer finding). After
   'T' the time must start with a digit, after ' ' a digit must go on as an
   hour HH:. Such text is never valid TOML.
 */

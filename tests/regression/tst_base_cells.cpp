@@ -288,9 +288,8 @@ std::string wettingOntoStaircase()
 // so that a second of settled checks follows such a late filling. The
 // filling pulse is as chaotic: over 14 Courant numbers 1e-5 to 4e-3 apart
 // it ranged 0.36-1.57 x (hydrostatic plus Joukowsky) with constant moduli
-// and 0.44-1.37 x with moduli falling with dilation (the default since
-// session 24; 1.37 x, 231 kPa, unperturbed), so it is bounded at 2 x here
-// (226a27a's point-wise pressure reached 3.2 x).
+// and 0.44-1.37 x with moduli falling with dilation (the default; 1.37 x,
+// 231 kPa, unperturbed), so it is bounded at 2 x here.
 TYPED_TEST( BaseCells, layer_wetted_onto_a_staircase_settles_hydrostatic )
 {
     const auto history = wettingHistory<TypeParam>( wettingOntoStaircase(),

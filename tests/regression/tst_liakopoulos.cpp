@@ -167,10 +167,10 @@ TYPED_TEST( Liakopoulos, drainage_matches_reference_point_by_point )
 
 // The semi-implicit scheme (docs/formulation.md §9) at 0.4 times the case's
 // Courant number: its step, 0.14 s, is still 18 times the explicit one.
-// Achieved (session 27, the explicit scheme's PIC damping per second):
-// points <= 2.0 %, cells <= 1.6 %, outflow 1.0-1.5 %, settlement 3.2-3.6 %;
-// first order in time, so at the case's 0.5 the points were 4.9 % off at
-// 5 min (2.6 % at 0.25, 2.2 % at 0.1; session 19).
+// Achieved (with the explicit scheme's PIC damping per second): points
+// <= 2.0 %, cells <= 1.6 %, outflow 1.0-1.5 %, settlement 3.2-3.6 %; first
+// order in time, so at the case's 0.5 the points are 4.9 % off at 5 min
+// (2.6 % at 0.25, 2.2 % at 0.1).
 TYPED_TEST( Liakopoulos, semi_implicit_drainage_matches_reference )
 {
     drainageAgainstReference<TypeParam>( mpm::TwoPhaseScheme::SemiImplicit, 0.2,

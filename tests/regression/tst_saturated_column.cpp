@@ -167,9 +167,9 @@ TYPED_TEST( SaturatedColumn, undrained_load_is_carried_by_skempton_b )
 
 // The semi-implicit scheme, every cell below the loaded one. Achieved:
 // 8.2e-4 (p_w), 6.5e-3 (sigma_yy), both in the cell just below it. With
-// one pressure unknown per node (until session 25) the approximate
-// projection put the three cells below the load 0.2 %, 1.2 %, 5 % off in
-// p_w and 1.6 %, 8 %, 35 % in sigma'_yy (docs/formulation.md §9).
+// one pressure unknown per node an approximate projection puts the three
+// cells below the load 0.2 %, 1.2 %, 5 % off in p_w and 1.6 %, 8 %, 35 % in
+// sigma'_yy: hence one per cell (docs/formulation.md §9).
 TYPED_TEST( SaturatedColumn, semi_implicit_undrained_load_is_carried_by_b )
 {
     undrainedSkemptonB<TypeParam>( mpm::TwoPhaseScheme::SemiImplicit, 1, 0.002,

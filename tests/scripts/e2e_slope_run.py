@@ -123,6 +123,23 @@ def main():
               "slope_metrics final max displacement %s m = metrics.json %.6g m"
               % (final.get("max_displacement_m"), reported))
 
+        # The run's verdict (solver/output/mpm_failure_verdict.cpp) and
+        # slope_metrics share their definitions: the same answer.
+        verdict = metrics.get("verdict", {})
+        check(verdict.get("failed") is False and slope.get("failed") is False,
+              "verdict: no failure in the C++ run and in slope_metrics (%s, %s)"
+              % (verdict.get("failed"), slope.get("failed")))
+        series_max = max((slope.get("series") or {}).get("max_displacement_m") or [math.nan])
+        check(close(verdict.get("max_displacement_m", math.nan), series_max, 0.0, 5e-7),
+              "verdict largest displacement %s m = slope_metrics' largest over the "
+              "snapshots %s m" % (verdict.get("max_displacement_m"), series_max))
+        check(verdict.get("snapshots_analysed") == slope.get("snapshots_analysed"),
+              "verdict and slope_metrics analyse the same %s snapshots"
+              % slope.get("snapshots_analysed"))
+        check(verdict.get("line", "").startswith("no failure:")
+              and "rainslide fos" in verdict.get("line", ""),
+              "verdict line points to rainslide fos: %s" % verdict.get("line"))
+
         # physics::pointWaterVolume: V n S (1 + p_w / K_w).
         with open(os.path.join(ROOT, "cases", "slope_base.toml"), "rb") as f:
             K_w = tomllib.load(f)["water"]["bulk_modulus_pa"]

@@ -4,6 +4,7 @@
 #include <case/mpm_case_config.hpp>
 #include <io/mpm_checkpoint.hpp>
 #include <solver/drivers/mpm_checkpoint_state.hpp>
+#include <solver/drivers/mpm_fos_bbar.hpp>
 #include <solver/drivers/mpm_fos_criterion.hpp>
 #include <solver/drivers/mpm_run_stages.hpp>
 #include <solver/mpm_simulation.hpp>
@@ -140,6 +141,10 @@ class FosTrialRunner
         const auto start = std::chrono::steady_clock::now();
         FosTrialRecord record;
         record.factor = factor;
+        // B-bar unless the case sets solver.bbar: at psi = 0 the volumetric
+        // locking of the plain point update holds the failing soil up (the
+        // Griffiths-Lane slope: FS 1.656 against 1.394).
+        const BbarForTrial bbar( _sim.solver, _config.solver );
         restoreInitialState();
         // After the restore: the held p_w are the initial state's.
         _sim.applyStage( fosTrialStage( _base, _sim.twoPhase(), factor,

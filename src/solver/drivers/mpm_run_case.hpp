@@ -235,6 +235,11 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                              options.stop_after_steps );
     observer.probes = &probes;
     observer.case_file = config.file;
+    std::vector<bool> dynamic_stages;
+    for ( const StageConfig& stage : config.stages )
+        dynamic_stages.push_back( stage.type == StageType::Dynamic );
+    FailureVerdict verdict( dynamic_stages );
+    observer.verdict = &verdict;
 
     nlohmann::json metrics = {
         { "case", config.name },
@@ -340,6 +345,7 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
     if ( observer.last_snapshot.num_points > 0 )
         metrics["deformation"] =
             deformationMetrics( observer.last_snapshot, 0.05 );
+    metrics["verdict"] = verdict.json( config.file );
     metrics["output"] = { { "hdf5", writer.h5Path() },
                           { "xdmf", writer.xdmfPath() },
                           { "snapshots", writer.snapshotCount() } };
@@ -362,6 +368,8 @@ RunStatus runCase( const CaseConfig& case_config, const RunOptions& options )
                                { "snapshots_kept", resumed->snapshots.count } };
     writeJsonAtomically( options.out_dir + "/metrics.json", metrics );
     printer.summary( metrics );
+    std::cout << "[" << config.name
+              << "] verdict: " << verdict.line( config.file ) << "\n";
     if ( status == RunStatus::Interrupted )
         printResumeHint(
             config.file,

@@ -4,6 +4,7 @@
 #include <io/mpm_checkpoint.hpp>
 #include <io/mpm_probe_recorder.hpp>
 #include <io/mpm_snapshot_writer.hpp>
+#include <solver/output/mpm_failure_verdict.hpp>
 #include <solver/output/mpm_metrics.hpp>
 #include <solver/output/mpm_progress.hpp>
 #include <solver/output/mpm_run_observer.hpp>
@@ -48,6 +49,8 @@ class OutputObserver : public RunObserver
     {
         writeSnapshot( _writer, progress, snapshot );
         pore_pressure.add( snapshot, progress.time_s );
+        if ( verdict )
+            verdict->add( progress, snapshot );
         last_snapshot = snapshot;
     }
     void onStageEnd( const RunProgress& progress,
@@ -112,7 +115,8 @@ class OutputObserver : public RunObserver
     HostSnapshot last_snapshot;
     //! p_w extremes over this session's snapshots (two-phase).
     PorePressureExtremes pore_pressure;
-    ProbeRecorder* probes = nullptr; //!< tracked points, if the case has any
+    ProbeRecorder* probes = nullptr;   //!< tracked points, if the case has any
+    FailureVerdict* verdict = nullptr; //!< whether the run failed
     int checkpoints_written = 0;
     double checkpoint_write_s_total = 0.0; //!< wall time writing them
     double checkpoint_write_s_max = 0.0;

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The runs of the speed-versus-error sweep (speed_vs_error.py): the plans of
 the Terzaghi and Liakopoulos columns and their case texts, made from
 cases/terzaghi.toml and cases/liakopoulos.toml by editing keys."""
@@ -9,7 +8,7 @@ import os
 import re
 import tomllib
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 VERIFY = os.path.join(ROOT, "scripts", "verification")
 TV_SNAPSHOTS = [0.05, 0.1, 0.2, 0.5, 1.0]
 

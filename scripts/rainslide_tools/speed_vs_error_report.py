@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The report of the speed-versus-error sweep (speed_vs_error.py): Pareto
 fronts, the tables of docs/speed-vs-error.md, the figure and runs.json/csv."""
 import csv

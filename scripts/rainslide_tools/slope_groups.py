@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Sliding groups of a slope run: points linked by chains of close neighbours,
 and the initial surface profile (the toe of the cut)."""
 import numpy as np

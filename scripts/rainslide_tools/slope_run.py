@@ -1,10 +1,9 @@
-#!/usr/bin/python3
 """Reading a rainslide results folder: particles.h5 snapshots, metrics.json,
 probes.csv.
 
-Shared by slope_metrics.py, slope_figures.py, slope_summary.py and
-probe_fluctuations.py. Errors in the input are InputError with a message
-naming the file and what is missing.
+Shared by slope_metrics.py, slope_figures.py, slope_summary.py,
+probe_fluctuations.py, study_panel.py and study_table.py. Errors in the input
+are InputError with a message naming the file and what is missing.
 """
 import csv
 import json

@@ -1,10 +1,9 @@
-#!/usr/bin/python3
 """Pore pressures of a slope run against hydrostatic: under the crest, the
 largest pulses against hydrostatic plus Joukowsky's water hammer, and the
 state of the point at the largest p_w."""
 import numpy as np
 
-from slope_run import json_num as _json_num
+from .slope_run import json_num as _json_num
 
 CREST_X_M = (2.0, 10.0)
 RHO_W = 1000.0  # kg/m^3
