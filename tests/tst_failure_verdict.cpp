@@ -76,6 +76,7 @@ TEST( FailureVerdict, finds_the_first_failure_and_the_later_slides )
     mpm::HostSnapshot s = restingBlock();
     movePatch( s, 0, 20, 0, 10, 0.0, -1.0 );
     verdict.add( at( 0, 0.0, 10.0 ), s );
+    verdict.endStage( at( 0, 0.0, 10.0 ), s );
     EXPECT_EQ( verdict.snapshotsAnalysed(), 0 );
 
     // t = 0.5: points move 0.2 m without plastic strain: not sliding.

@@ -150,16 +150,26 @@ void FailureVerdict::add( const RunProgress& progress,
     const int stage = progress.stage_index;
     if ( stage != _reference_stage )
     {
-        // The previous stage's end snapshot, else the last reset.
-        const bool follows_end = _last_stage == stage - 1 && _last.num_points;
-        setReference( follows_end ? _last : snapshot, !follows_end );
+        // No stage end seen before it (the first stage, or a restart):
+        // the positions at the last displacement reset.
+        setReference( snapshot, true );
         _reference_stage = stage;
         _prev_time_s = progress.time_s - progress.stage_time_s;
     }
     if ( stage < static_cast<int>( _analysed.size() ) && _analysed[stage] )
         analyse( progress, snapshot );
-    _last = snapshot;
-    _last_stage = stage;
+}
+
+void FailureVerdict::endStage( const RunProgress& progress,
+                               const HostSnapshot& end_state )
+{
+    if ( end_state.num_points == 0 )
+        return;
+    if ( _spacing_m <= 0.0 )
+        _spacing_m = pointSpacing( end_state );
+    setReference( end_state, false );
+    _reference_stage = progress.stage_index + 1;
+    _prev_time_s = progress.time_s;
 }
 
 void FailureVerdict::analyse( const RunProgress& progress,
@@ -250,18 +260,14 @@ void FailureVerdict::analyse( const RunProgress& progress,
         // Earlier counted points (still active) with the counted ones.
         std::vector<double> both_xy;
         std::vector<char> both_old;
+        std::vector<char> in_counted( n, 0 );
         for ( const int k : counted_points )
         {
             both_xy.push_back( snapshot.x[2 * sliding[k]] );
             both_xy.push_back( snapshot.x[2 * sliding[k] + 1] );
             both_old.push_back( was( sliding[k] ) );
-        }
-        std::vector<int> counted_label;
-        for ( const int k : counted_points )
-            counted_label.push_back( label[k] );
-        std::vector<char> in_counted( n, 0 );
-        for ( const int k : counted_points )
             in_counted[sliding[k]] = 1;
+        }
         for ( int p = 0; p < n; ++p )
             if ( slot[p] >= 0 && was( p ) && !in_counted[p] )
             {
@@ -279,12 +285,11 @@ void FailureVerdict::analyse( const RunProgress& progress,
                     joint_old[joint[i]] = 1;
             // A counted group is detached if none of its points is in a
             // joint group holding an earlier point.
-            std::unordered_map<int, bool> group_linked;
+            std::vector<char> linked( group_area.size(), 0 );
             for ( std::size_t i = 0; i < counted_points.size(); ++i )
-                group_linked[counted_label[i]] =
-                    group_linked[counted_label[i]] || joint_old[joint[i]];
-            for ( const auto& [group, linked] : group_linked )
-                detached = detached || !linked;
+                linked[label[counted_points[i]]] |= joint_old[joint[i]];
+            for ( const int k : counted_points )
+                detached = detached || !linked[label[k]];
         }
     }
     // Rule (b): the newly sliding area jumps after a quiet spell.

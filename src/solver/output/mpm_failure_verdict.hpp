@@ -72,9 +72,11 @@ class FailureVerdict
     FailureVerdict( std::vector<bool> analysed_stages,
                     VerdictThresholds thresholds = VerdictThresholds() );
 
-    //! Takes in a snapshot (the stage-end snapshot is the next stage's
-    //! reference state).
+    //! Takes in a snapshot.
     void add( const RunProgress& progress, const HostSnapshot& snapshot );
+    //! The stage `progress.stage_index` ended in `end_state`: the next
+    //! stage's reference state.
+    void endStage( const RunProgress& progress, const HostSnapshot& end_state );
 
     bool failed() const { return !_onsets.empty(); }
     const std::vector<SlideOnset>& onsets() const { return _onsets; }
@@ -105,8 +107,6 @@ class FailureVerdict
     //! Per band of height (key: floor(y / spacing)): the smallest and the
     //! largest x of the reference state.
     std::unordered_map<long long, std::pair<double, double>> _outline;
-    HostSnapshot _last; //!< the latest snapshot
-    int _last_stage = -1;
     double _prev_time_s = 0.0; //!< of the previous analysed snapshot
     bool _armed = true;
     double _last_high_s = 0.0;

@@ -57,6 +57,8 @@ class OutputObserver : public RunObserver
                      const StageSummary& summary ) override
     {
         _printer.stageEnd( progress, summary );
+        if ( verdict )
+            verdict->endStage( progress, last_snapshot );
     }
     //! "<case file>: warning: <text>" on stderr.
     void onWarning( const std::string& text ) override
