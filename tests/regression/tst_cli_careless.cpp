@@ -61,16 +61,26 @@ pid_t spawnRainslide( const std::string& args, const fs::path& log,
     return pid;
 }
 
-//! True once the /proc/<pid>/status mask `field` ("SigCgt:" caught,
-//! "SigIgn:" ignored) holds SIGINT, or false after `timeout_s`.
+//! True once `pid` runs the rainslide binary (not the forked test process
+//! before its exec, whose masks are the test's) and its /proc/<pid>/status
+//! mask `field` ("SigCgt:" caught, "SigIgn:" ignored) holds SIGINT, or
+//! false after `timeout_s`.
 bool waitForSigint( const pid_t pid, const std::string& field,
                     const double timeout_s )
 {
+    const std::string proc = "/proc/" + std::to_string( pid );
+    std::error_code error;
+    const fs::path binary = fs::canonical( RAINSLIDE_BINARY, error );
     const auto end = std::chrono::steady_clock::now() +
                      std::chrono::duration<double>( timeout_s );
     while ( std::chrono::steady_clock::now() < end )
     {
-        std::ifstream status( "/proc/" + std::to_string( pid ) + "/status" );
+        if ( fs::read_symlink( proc + "/exe", error ) != binary )
+        {
+            std::this_thread::sleep_for( std::chrono::milliseconds( 2 ) );
+            continue;
+        }
+        std::ifstream status( proc + "/status" );
         std::string line;
         while ( std::getline( status, line ) )
             if ( line.rfind( field, 0 ) == 0 &&
